@@ -1,0 +1,171 @@
+// MMRep command-line framework: runs a Slicer Execution Model CLI module from its XML description.
+//
+// The module's .xml (compiled in by mmrep_add_cli_module) is the single source of truth: flags,
+// long flags, indexed arguments, types, defaults and enumerations are all read from it.
+// A module writes only its science:
+//
+//   int ModuleEntryPoint(int argc, char* argv[])
+//   {
+//     return mmrep::cli::RunModule(argc, argv, MeshQualityXML, [](mmrep::cli::ModuleContext& ctx) {
+//       const auto in = ctx.args.String("inputMesh");
+//       ctx.progress.Start("Computing quality");
+//       ... ctx.progress.Report(0.5); ...
+//       mmrep::cli::AtomicOutput out(ctx.args.String("outputMesh"));
+//       Write(mesh, out.TempPath());
+//       out.Commit();
+//       ctx.outputs.Set("minScaledJacobian", 0.42);
+//     });
+//   }
+//
+// Behaviour shared by every module:
+//   --xml                     prints the description verbatim and exits 0;
+//   --help / -h               usage generated from the description;
+//   --returnparameterfile F   output-channel scalars written as `name = value` lines on success;
+//   --processinformationaddress A  accepted and ignored (Slicer passes it);
+//   progress on stdout: <filter-start>…</filter-start>, <filter-progress>0.42</filter-progress>,
+//   <filter-end>…</filter-end>, as Slicer parses them;
+//   errors: one line on stderr "<Module>: error: <what>", exit code 1 (2 for command-line errors).
+#pragma once
+
+#include <array>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace mmrep::cli
+{
+
+// A user-facing error (bad file, bad value): reported as one line, never a crash.
+class ModuleError : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+// One <parameter> of the description (integer, double, file, image, geometry, point, …).
+struct Parameter
+{
+  std::string tag;          // XML element name: integer, float, double, boolean, string, file, …
+  std::string name;         // <name>
+  std::string flag;         // <flag> without '-', may be empty
+  std::string longflag;     // <longflag> without '--', may be empty
+  int index = -1;           // <index> for positional arguments, -1 otherwise
+  std::string channel;      // input / output / empty
+  std::string label;
+  std::string description;
+  std::string defaultValue; // <default>, empty when none
+  std::vector<std::string> elements; // <element> of *-enumeration
+  std::string coordinateSystem;      // point/pointfile attribute: "lps" or "ras" (Slicer default ras)
+  bool multiple = false;             // multiple="true"
+  std::string minimum, maximum;      // <constraints>
+  bool IsReturnValue() const;        // output scalar without flag/index → return parameter file
+};
+
+// The parsed <executable> description.
+struct ModuleDescription
+{
+  std::string category, title, description, version, license, contributor;
+  std::vector<Parameter> parameters;
+
+  static ModuleDescription FromXML(const std::string& xml); // throws ModuleError on malformed XML
+  const Parameter* Find(const std::string& name) const;     // nullptr when absent
+};
+
+// Values given on the command line (or defaults), validated against their declared types.
+class Arguments
+{
+public:
+  Arguments() = default;
+  Arguments(const ModuleDescription& description, std::map<std::string, std::vector<std::string>> values);
+
+  bool Has(const std::string& name) const;   // given, or has a default
+  bool Given(const std::string& name) const; // given explicitly on the command line
+  std::string String(const std::string& name) const;
+  long long Int(const std::string& name) const;
+  double Double(const std::string& name) const;
+  bool Bool(const std::string& name) const;
+  std::vector<double> Doubles(const std::string& name) const; // integer-/float-/double-vector
+  std::vector<long long> Ints(const std::string& name) const;
+  std::vector<std::string> Strings(const std::string& name) const; // string-vector or multiple
+  // <point> parameters (possibly multiple), converted to LPS whatever their coordinateSystem.
+  std::vector<std::array<double, 3>> PointsLPS(const std::string& name) const;
+
+private:
+  const Parameter& Declared(const std::string& name) const;
+  const ModuleDescription* description_ = nullptr;
+  std::map<std::string, std::vector<std::string>> values_;
+};
+
+// Slicer-style progress reporting on stdout. Thread-safe; fractions are clamped to [0,1] and
+// never go backwards; repeated identical values are not printed twice.
+class Progress
+{
+public:
+  void Start(const std::string& comment);
+  void Report(double fraction);
+  // Report progress of a sub-stage mapped into [from, to] of the whole.
+  void ReportRange(double from, double to, double fraction) { Report(from + (to - from) * fraction); }
+  void End();
+
+private:
+  std::mutex mutex_;
+  std::string comment_;
+  int last_ = -1; // last printed value in 1/1000
+};
+
+// Output scalars (channel=output, no flag/index), written to --returnparameterfile on success.
+class ReturnParameters
+{
+public:
+  void Set(const std::string& name, double value);
+  void Set(const std::string& name, long long value);
+  void Set(const std::string& name, int value) { Set(name, static_cast<long long>(value)); }
+  void Set(const std::string& name, const std::string& value);
+  void Set(const std::string& name, const std::vector<double>& value);
+  const std::map<std::string, std::string>& Values() const { return values_; }
+
+private:
+  std::map<std::string, std::string> values_;
+};
+
+struct ModuleContext
+{
+  std::string moduleName;
+  const ModuleDescription& description;
+  Arguments args;
+  Progress progress;
+  ReturnParameters outputs;
+};
+
+// Parses argv against the XML description, runs body, reports errors, writes return parameters.
+// Returns the process exit code: 0 success, 1 module error, 2 command-line error.
+int RunModule(int argc, char* argv[], const char* xmlDescription,
+              const std::function<void(ModuleContext&)>& body);
+
+// Writes to a temporary sibling file and renames it over the final path on Commit(); the
+// temporary is removed if Commit() is never reached, so a failure leaves no partial output.
+// The temporary keeps the final extension (out.vtu -> out.mmrep-tmp-<pid>-<n>.vtu) so ITK/VTK
+// writers that choose the format by extension still work.
+class AtomicOutput
+{
+public:
+  explicit AtomicOutput(std::string finalPath); // throws ModuleError if the folder is not writable
+  ~AtomicOutput();
+  AtomicOutput(const AtomicOutput&) = delete;
+  AtomicOutput& operator=(const AtomicOutput&) = delete;
+  const std::string& TempPath() const { return temp_; }
+  const std::string& FinalPath() const { return final_; }
+  void Commit(); // throws ModuleError if the rename fails
+
+private:
+  std::string final_, temp_;
+  bool committed_ = false;
+};
+
+// Lower-cased extension including the dot; knows double extensions (.nii.gz, .mrk.json).
+std::string FileExtension(const std::string& path);
+
+} // namespace mmrep::cli

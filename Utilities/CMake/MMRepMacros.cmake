@@ -1,0 +1,56 @@
+# mmrep_embed_text(<target-var> INPUT <file> SYMBOL <name>)
+#   Adds a generated source to <target-var> that defines `const char <name>[]` = file contents.
+function(mmrep_embed_text out_var)
+  cmake_parse_arguments(E "" "INPUT;SYMBOL" "" ${ARGN})
+  set(out ${CMAKE_CURRENT_BINARY_DIR}/${E_SYMBOL}.cxx)
+  add_custom_command(OUTPUT ${out}
+    COMMAND ${CMAKE_COMMAND} -DINPUT=${E_INPUT} -DOUTPUT=${out} -DSYMBOL=${E_SYMBOL}
+            -P ${PROJECT_SOURCE_DIR}/Utilities/CMake/EmbedText.cmake
+    DEPENDS ${E_INPUT} ${PROJECT_SOURCE_DIR}/Utilities/CMake/EmbedText.cmake
+    COMMENT "Embedding ${E_INPUT}")
+  set(${out_var} ${${out_var}} ${out} PARENT_SCOPE)
+endfunction()
+
+# mmrep_add_cli_module(<Name> [SOURCES extra.cxx ...] [LIBRARIES lib ...])
+#   Slicer CLI module in the current folder, from <Name>.xml and <Name>.cxx:
+#   - <Name>Lib: shared library exporting `int ModuleEntryPoint(int, char*[])` (Slicer loads it),
+#     in build/lib/cli-modules/;
+#   - <Name>: executable in build/bin/ that just calls ModuleEntryPoint;
+#   - ctest `<Name>.XmlValidatesAgainstSchema`: `<Name> --xml` passes xmllint --schema;
+#   - the folder's Testing/ subdirectory, when present.
+function(mmrep_add_cli_module name)
+  cmake_parse_arguments(M "" "" "SOURCES;LIBRARIES" ${ARGN})
+  set(xml ${CMAKE_CURRENT_SOURCE_DIR}/${name}.xml)
+  set(sources ${name}.cxx ${M_SOURCES})
+  mmrep_embed_text(sources INPUT ${xml} SYMBOL ${name}XML)
+  add_library(${name}Lib SHARED ${sources})
+  target_link_libraries(${name}Lib PRIVATE MMRepCLI ${M_LIBRARIES})
+  target_compile_definitions(${name}Lib PRIVATE MMREP_MODULE_NAME="${name}")
+  set_target_properties(${name}Lib PROPERTIES
+    LIBRARY_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/lib/cli-modules)
+  add_executable(${name} ${PROJECT_SOURCE_DIR}/Libs/MMRepCLI/mmrepModuleMain.cxx)
+  target_link_libraries(${name} PRIVATE ${name}Lib)
+  set_target_properties(${name} PROPERTIES
+    BUILD_RPATH "${PROJECT_BINARY_DIR}/lib/cli-modules;${PROJECT_BINARY_DIR}/lib")
+  if(XMLLINT_EXECUTABLE)
+    add_test(NAME ${name}.XmlValidatesAgainstSchema
+      COMMAND sh -c "set -e; '$<TARGET_FILE:${name}>' --xml > '${CMAKE_CURRENT_BINARY_DIR}/${name}.xml.out'; cmp '${CMAKE_CURRENT_BINARY_DIR}/${name}.xml.out' '${xml}'; '${XMLLINT_EXECUTABLE}' --noout --schema '${MMREP_MODULE_SCHEMA}' '${CMAKE_CURRENT_BINARY_DIR}/${name}.xml.out'")
+  endif()
+  if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/Testing/CMakeLists.txt)
+    add_subdirectory(Testing)
+  endif()
+endfunction()
+
+# mmrep_add_gtest(<Name> SOURCES a.cxx ... LIBRARIES ...)
+#   A GoogleTest executable whose tests each become a ctest test (discovered before running).
+function(mmrep_add_gtest name)
+  cmake_parse_arguments(T "" "" "SOURCES;LIBRARIES" ${ARGN})
+  add_executable(${name} ${T_SOURCES})
+  target_link_libraries(${name} PRIVATE ${T_LIBRARIES} GTest::gtest GTest::gtest_main)
+  target_compile_definitions(${name} PRIVATE
+    MMREP_SOURCE_DIR="${PROJECT_SOURCE_DIR}" MMREP_BINARY_DIR="${PROJECT_BINARY_DIR}"
+    MMREP_SAMPLE_DATA="${MMREP_SAMPLE_DATA}" MMREP_TEST_DATA="${MMREP_TEST_DATA}")
+  set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/tests)
+  gtest_discover_tests(${name} DISCOVERY_MODE PRE_TEST
+    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR} PROPERTIES TIMEOUT 600)
+endfunction()

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs MMRep's build and test dependencies from Debian 12 packages.
+# Idempotent: does nothing (no apt-get update either) when every package is already installed.
+set -euo pipefail
+
+PACKAGES=(
+  cmake g++ make pkg-config
+  libinsighttoolkit5-dev   # ITK 5.2: images, filters, DICOM (GDCM)
+  libvtk9-dev              # VTK 9.1: surface and mesh file formats, rendering
+  libeigen3-dev            # linear algebra
+  libopenmesh-dev          # half-edge surface meshes
+  nlohmann-json3-dev       # Slicer markups (.mrk.json), reports
+  libtclap-dev             # command-line parsing (as Slicer's GenerateCLP)
+  libgtest-dev             # unit tests
+  libxml2-utils            # xmllint: module descriptions against the Slicer schema
+  calculix-ccx gmsh        # real FE tools that read our exports in the tests
+  xvfb xauth               # off-screen X server for VTK pictures
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "MMRep: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
