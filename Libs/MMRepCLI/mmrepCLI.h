@@ -4,7 +4,8 @@
 // long flags, indexed arguments, types, defaults and enumerations are all read from it.
 // A module writes only its science:
 //
-//   int ModuleEntryPoint(int argc, char* argv[])
+//   extern const char MeshQualityXML[];
+//   MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
 //   {
 //     return mmrep::cli::RunModule(argc, argv, MeshQualityXML, [](mmrep::cli::ModuleContext& ctx) {
 //       const auto in = ctx.args.String("inputMesh");
@@ -34,6 +35,11 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+// Defines the module's Slicer entry point with C linkage, exported from the module's shared library:
+//   extern const char MeshQualityXML[];                       // generated from MeshQuality.xml
+//   MMREP_MODULE_ENTRY_POINT(int argc, char* argv[]) { return mmrep::cli::RunModule(argc, argv, MeshQualityXML, …); }
+#define MMREP_MODULE_ENTRY_POINT extern "C" __attribute__((visibility("default"))) int ModuleEntryPoint
 
 namespace mmrep::cli
 {

@@ -1,0 +1,25 @@
+// Volume input/output in physical LPS space: NRRD, MetaImage (.mha/.mhd), NIfTI (.nii, .nii.gz)
+// and DICOM series directories (ITK's GDCM series reader, first series found, sorted by position).
+#pragma once
+
+#include <itkImage.h>
+
+#include <string>
+
+namespace mmrep
+{
+
+using CTImage = itk::Image<short, 3>;   // CT volumes as stored by scanners (HU or scanner units)
+using FloatImage = itk::Image<float, 3>; // distance maps and other scalar fields
+
+// Reads a file or a DICOM directory. Throws std::runtime_error naming the path on any problem
+// (missing, truncated, not 3D, unknown format).
+CTImage::Pointer ReadCTImage(const std::string& pathOrDicomDirectory);
+FloatImage::Pointer ReadFloatImage(const std::string& path);
+void WriteImage(const CTImage* image, const std::string& path);
+void WriteImage(const FloatImage* image, const std::string& path);
+void WriteImage(const itk::Image<unsigned char, 3>* image, const std::string& path);
+// Writes a DICOM series (one file per slice, CT modality) into an existing directory.
+void WriteDicomSeries(const CTImage* image, const std::string& directory);
+
+} // namespace mmrep
