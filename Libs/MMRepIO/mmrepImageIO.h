@@ -11,14 +11,16 @@ namespace mmrep
 
 using CTImage = itk::Image<short, 3>;   // CT volumes as stored by scanners (HU or scanner units)
 using FloatImage = itk::Image<float, 3>; // distance maps and other scalar fields
+using MaskImage = itk::Image<unsigned char, 3>; // binary masks: 1 inside, 0 outside
 
 // Reads a file or a DICOM directory. Throws std::runtime_error naming the path on any problem
 // (missing, truncated, not 3D, unknown format).
 CTImage::Pointer ReadCTImage(const std::string& pathOrDicomDirectory);
 FloatImage::Pointer ReadFloatImage(const std::string& path);
+MaskImage::Pointer ReadMaskImage(const std::string& path); // values cast to unsigned char
 void WriteImage(const CTImage* image, const std::string& path);
 void WriteImage(const FloatImage* image, const std::string& path);
-void WriteImage(const itk::Image<unsigned char, 3>* image, const std::string& path);
+void WriteImage(const MaskImage* image, const std::string& path);
 // Writes a DICOM series (one file per slice, CT modality) into an existing directory.
 void WriteDicomSeries(const CTImage* image, const std::string& directory);
 

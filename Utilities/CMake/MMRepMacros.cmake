@@ -50,6 +50,7 @@ function(mmrep_add_gtest name)
   target_compile_definitions(${name} PRIVATE
     MMREP_SOURCE_DIR="${PROJECT_SOURCE_DIR}" MMREP_BINARY_DIR="${PROJECT_BINARY_DIR}"
     MMREP_SAMPLE_DATA="${MMREP_SAMPLE_DATA}" MMREP_TEST_DATA="${MMREP_TEST_DATA}")
+  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/Testing/Utilities)
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/tests)
   gtest_discover_tests(${name} DISCOVERY_MODE PRE_TEST
     WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR} PROPERTIES TIMEOUT 600)

@@ -1,0 +1,55 @@
+// Skin and bone masks of a head CT.
+//
+// Skin: threshold, a small opening to detach the table, head holder and cushions, the largest
+// connected component (the head), then interior air (airways, sinuses, ear canals) filled so the
+// skin is one closed outer surface: background not reachable from the volume border in 3-D, then
+// background enclosed within each axial slice (airways leave the volume through the neck).
+// Bone: threshold inside the filled head, largest connected component, enclosed cavities filled.
+#pragma once
+
+#include "mmrepImageIO.h"
+
+#include <functional>
+
+namespace mmrep
+{
+
+struct HeadSegmentationOptions
+{
+  double skinThreshold = 0;         // intensities >= this are tissue
+  double boneThreshold = 0;         // intensities >= this are bone
+  unsigned int openingRadius = 1;   // voxels; 0 disables the opening
+  bool fillInteriorAir = true;      // fill airways and sinuses in the skin mask
+  double minimumHeadVolume = 5.0e5; // mm³ (0.5 l): below that there is no head in the volume
+  double minimumBoneVolume = 2.0e4; // mm³ (20 ml)
+};
+
+struct HeadSegmentation
+{
+  MaskImage::Pointer skin;
+  MaskImage::Pointer bone;
+  double skinVolume = 0; // mm³
+  double boneVolume = 0; // mm³
+};
+
+// Throws std::runtime_error with a one-line reason: empty segmentation at the threshold, no head
+// (largest component too small), no bone.
+HeadSegmentation SegmentHead(const CTImage* ct, const HeadSegmentationOptions& options,
+                             const std::function<void(double)>& progress = {});
+
+// Index axis closest to the patient's superior-inferior direction (LPS z).
+unsigned int AxialAxis(const itk::ImageBase<3>* image);
+
+// Sets to 1 every background voxel not 6-connected to the volume border; with `axialSlices`,
+// then also every background pixel not 4-connected to the border of its slice along `axis`.
+void FillEnclosedBackground(MaskImage* mask, bool axialSlices, unsigned int axis);
+
+// Keeps only the largest 6-connected foreground component; returns its voxel count (0 if none).
+std::size_t KeepLargestComponent(MaskImage::Pointer& mask);
+
+// CT copy whose iso-surface at `threshold` is the boundary of `mask`: voxels inside are raised to
+// at least threshold+1, voxels outside lowered to at most threshold-1, others keep their values so
+// Marching Cubes still interpolates the real intensities where the mask follows the threshold.
+CTImage::Pointer MaskedIntensities(const CTImage* ct, const MaskImage* mask, double threshold);
+
+} // namespace mmrep

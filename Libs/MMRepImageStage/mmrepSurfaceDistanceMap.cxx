@@ -1,0 +1,207 @@
+#include "mmrepSurfaceDistanceMap.h"
+
+#include "itkSaitoToriwakiDistanceMapImageFilter.h"
+#include "mmrepPointTriangleDistance.h"
+
+#include <itkMultiThreaderBase.h>
+#include <vtkCellArray.h>
+#include <vtkIdList.h>
+#include <vtkNew.h>
+#include <vtkTriangleFilter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace mmrep
+{
+
+namespace
+{
+struct Triangle
+{
+  Eigen::Vector3d a, b, c;
+};
+
+std::vector<Triangle> Triangles(vtkPolyData* surface)
+{
+  vtkNew<vtkTriangleFilter> tri; // polygons and strips become triangles; lines and vertices dropped
+  tri->SetInputData(surface);
+  tri->PassLinesOff();
+  tri->PassVertsOff();
+  tri->Update();
+  vtkPolyData* t = tri->GetOutput();
+  std::vector<Triangle> out;
+  out.reserve(t->GetNumberOfPolys());
+  vtkNew<vtkIdList> ids;
+  auto* polys = t->GetPolys();
+  polys->InitTraversal();
+  while (polys->GetNextCell(ids))
+  {
+    if (ids->GetNumberOfIds() != 3)
+      continue;
+    Triangle tr;
+    t->GetPoint(ids->GetId(0), tr.a.data());
+    t->GetPoint(ids->GetId(1), tr.b.data());
+    t->GetPoint(ids->GetId(2), tr.c.data());
+    out.push_back(tr);
+  }
+  return out;
+}
+} // namespace
+
+FloatImage::Pointer ComputeSurfaceDistanceMap(vtkPolyData* surface, const SurfaceDistanceMapOptions& o,
+                                              const std::function<void(double)>& progress)
+{
+  auto report = [&](double f) {
+    if (progress)
+      progress(f);
+  };
+  if (!(o.spacing > 0) || !(o.margin >= 0) || !(o.exactBand >= 1))
+    throw std::runtime_error("distance map: spacing must be > 0, margin >= 0 and the exact band >= 1 voxel");
+  if (surface == nullptr || surface->GetNumberOfPolys() + surface->GetNumberOfStrips() == 0)
+    throw std::runtime_error("distance map: the surface has no triangles");
+  const auto triangles = Triangles(surface);
+  if (triangles.empty())
+    throw std::runtime_error("distance map: the surface has no triangles");
+
+  // Grid over the region (or the surface's bounds) plus the margin, aligned with LPS axes.
+  std::array<double, 6> box = o.region;
+  if (!(box[0] <= box[1] && box[2] <= box[3] && box[4] <= box[5]))
+    surface->GetBounds(box.data());
+  FloatImage::SizeType size;
+  FloatImage::PointType origin;
+  FloatImage::SpacingType spacing;
+  double voxels = 1;
+  for (unsigned a = 0; a < 3; ++a)
+  {
+    origin[a] = box[2 * a] - o.margin;
+    const double extent = box[2 * a + 1] + o.margin - origin[a];
+    size[a] = static_cast<itk::SizeValueType>(std::ceil(extent / o.spacing)) + 1;
+    spacing[a] = o.spacing;
+    voxels *= size[a];
+  }
+  if (voxels > 512.0 * 512.0 * 512.0)
+    throw std::runtime_error("distance map: the grid would have " + std::to_string(static_cast<long long>(voxels)) +
+                             " voxels; use a coarser spacing or a smaller margin");
+
+  auto map = FloatImage::New();
+  FloatImage::RegionType region;
+  region.SetSize(size);
+  map->SetRegions(region);
+  map->SetOrigin(origin);
+  map->SetSpacing(spacing);
+  map->Allocate();
+  const std::size_t nx = size[0], ny = size[1], nz = size[2], n = nx * ny * nz;
+  const double h = o.spacing, band = o.exactBand * h;
+  std::vector<double> exact(n, std::numeric_limits<double>::infinity());
+
+  // Exact band: each triangle visits the voxels of its bounding box grown by the band. Work is
+  // split into z-slabs owned by one thread each (no write conflicts); the minimum does not depend
+  // on the order of triangles, so the result is the same for any number of threads.
+  const Eigen::Vector3d o3(origin[0], origin[1], origin[2]);
+  auto indexRange = [&](double lo, double hi, std::size_t count, std::size_t& i0, std::size_t& i1) {
+    const double a = std::ceil((lo - band) / h), b = std::floor((hi + band) / h);
+    i0 = static_cast<std::size_t>(std::max(0.0, a));
+    i1 = static_cast<std::size_t>(std::max(-1.0, std::min(static_cast<double>(count) - 1, b)) + 1);
+  };
+  const std::size_t slabCount = std::min<std::size_t>(nz, 64);
+  std::vector<std::vector<std::uint32_t>> slabTriangles(slabCount);
+  auto slabOf = [&](std::size_t k) { return k * slabCount / nz; };
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const auto& tr = triangles[t];
+    const double zlo = std::min({tr.a.z(), tr.b.z(), tr.c.z()}) - o3.z();
+    const double zhi = std::max({tr.a.z(), tr.b.z(), tr.c.z()}) - o3.z();
+    std::size_t k0, k1;
+    indexRange(zlo, zhi, nz, k0, k1);
+    if (k0 >= k1)
+      continue;
+    for (std::size_t s = slabOf(k0); s <= slabOf(k1 - 1); ++s)
+      slabTriangles[s].push_back(static_cast<std::uint32_t>(t));
+  }
+  const double band2 = band * band;
+  itk::MultiThreaderBase::New()->ParallelizeArray(
+    0, slabCount,
+    [&](itk::SizeValueType s) {
+      // Voxel k-range of this slab: the k with slabOf(k) == s.
+      const std::size_t kBegin = (s * nz + slabCount - 1) / slabCount;
+      const std::size_t kEnd = ((s + 1) * nz + slabCount - 1) / slabCount;
+      for (auto t : slabTriangles[s])
+      {
+        const auto& tr = triangles[t];
+        const Eigen::Vector3d lo = tr.a.cwiseMin(tr.b).cwiseMin(tr.c) - o3, hi = tr.a.cwiseMax(tr.b).cwiseMax(tr.c) - o3;
+        std::size_t i0, i1, j0, j1, k0, k1;
+        indexRange(lo.x(), hi.x(), nx, i0, i1);
+        indexRange(lo.y(), hi.y(), ny, j0, j1);
+        indexRange(lo.z(), hi.z(), nz, k0, k1);
+        k0 = std::max(k0, kBegin);
+        k1 = std::min(k1, kEnd);
+        for (std::size_t k = k0; k < k1; ++k)
+          for (std::size_t j = j0; j < j1; ++j)
+            for (std::size_t i = i0; i < i1; ++i)
+            {
+              const Eigen::Vector3d p = o3 + Eigen::Vector3d(i * h, j * h, k * h);
+              const double d2 = SquaredDistanceToTriangle(p, tr.a, tr.b, tr.c);
+              double& e = exact[i + nx * (j + ny * k)];
+              if (d2 < e && d2 <= band2)
+                e = d2;
+            }
+      }
+    },
+    nullptr);
+  report(0.6);
+
+  // Far field through the nearest band voxel given by the Saito–Toriwaki transform.
+  auto bandMask = MaskImage::New();
+  bandMask->CopyInformation(map);
+  bandMask->SetRegions(region);
+  bandMask->Allocate();
+  std::size_t bandVoxels = 0;
+  for (std::size_t v = 0; v < n; ++v)
+  {
+    const bool in = std::isfinite(exact[v]);
+    bandMask->GetBufferPointer()[v] = in;
+    bandVoxels += in;
+  }
+  if (bandVoxels == 0)
+    throw std::runtime_error("distance map: no voxel lies near the surface (is the region away from it?)");
+  float* out = map->GetBufferPointer();
+  if (bandVoxels == n)
+  {
+    for (std::size_t v = 0; v < n; ++v)
+      out[v] = static_cast<float>(std::sqrt(exact[v]));
+    report(1.0);
+    return map;
+  }
+  using EDT = itk::SaitoToriwakiDistanceMapImageFilter<MaskImage, FloatImage>;
+  auto edt = EDT::New();
+  edt->SetInput(bandMask);
+  edt->SetComputeNearestVector(true);
+  edt->Update();
+  const auto* vec = edt->GetNearestVectorOutput()->GetBufferPointer();
+  report(0.9);
+  for (std::size_t k = 0, v = 0; k < nz; ++k)
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t i = 0; i < nx; ++i, ++v)
+      {
+        if (std::isfinite(exact[v]))
+        {
+          out[v] = static_cast<float>(std::sqrt(exact[v]));
+          continue;
+        }
+        const auto& d = vec[v];
+        // Grid axes are LPS axes with isotropic spacing, so the offset in voxels is d / h.
+        const long qi = static_cast<long>(i) + std::lround(d[0] / h);
+        const long qj = static_cast<long>(j) + std::lround(d[1] / h);
+        const long qk = static_cast<long>(k) + std::lround(d[2] / h);
+        const std::size_t q = static_cast<std::size_t>(qi) + nx * (static_cast<std::size_t>(qj) + ny * static_cast<std::size_t>(qk));
+        out[v] = static_cast<float>(std::sqrt(static_cast<double>(d.GetSquaredNorm())) + std::sqrt(exact[q]));
+      }
+  report(1.0);
+  return map;
+}
+
+} // namespace mmrep

@@ -1,0 +1,35 @@
+// Distance map of a triangle surface on a regular grid, as the registration consumes it.
+//
+// Near the surface the map holds the exact Euclidean distance to the triangles (not to voxel
+// centres): every voxel within `exactBand` voxels of a triangle gets the exact point-to-triangle
+// distance. Farther away, the Saito–Toriwaki transform gives the nearest band voxel q of each
+// voxel p and the map stores |p - q| + d(q), an upper bound that is exact along straight
+// approach paths and within about one voxel elsewhere (far from the surface, where only the
+// direction of descent matters).
+#pragma once
+
+#include "mmrepImageIO.h"
+
+#include <vtkPolyData.h>
+
+#include <array>
+#include <functional>
+
+namespace mmrep
+{
+
+struct SurfaceDistanceMapOptions
+{
+  double spacing = 1.5;  // mm, isotropic voxel size (the paper: 1.5 mm overall, 0.5 mm for the lips)
+  double margin = 10.0;  // mm added around the region on every side
+  double exactBand = 2.0; // voxels: half-width of the band of exact distances
+  // Region covered, in LPS mm: {xmin, xmax, ymin, ymax, zmin, zmax}. Empty (min > max): the
+  // surface's bounding box.
+  std::array<double, 6> region{1, 0, 1, 0, 1, 0};
+};
+
+// Throws std::runtime_error for a surface without triangles or a grid too large (> 512³ voxels).
+FloatImage::Pointer ComputeSurfaceDistanceMap(vtkPolyData* surface, const SurfaceDistanceMapOptions& options,
+                                              const std::function<void(double)>& progress = {});
+
+} // namespace mmrep

@@ -1,0 +1,165 @@
+#include "mmrepSnapshot.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkLookupTable.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkPointData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <cstdlib>
+#include <stdexcept>
+
+namespace mmrep
+{
+
+namespace
+{
+// Camera direction (from focal point to camera) and up vector, in LPS.
+void ViewVectors(View v, double dir[3], double up[3])
+{
+  up[0] = 0, up[1] = 0, up[2] = 1; // superior
+  dir[0] = dir[1] = dir[2] = 0;
+  switch (v)
+  {
+    case View::Anterior: dir[1] = -1; break; // anterior is -P
+    case View::Posterior: dir[1] = 1; break;
+    case View::Left: dir[0] = 1; break;      // left is +L
+    case View::Right: dir[0] = -1; break;
+    case View::Superior:
+      dir[2] = 1, up[1] = -1, up[2] = 0; // nose up in the picture
+      break;
+    case View::Inferior:
+      dir[2] = -1, up[1] = -1, up[2] = 0;
+      break;
+  }
+}
+
+const char* ViewName(View v)
+{
+  switch (v)
+  {
+    case View::Anterior: return "anterior";
+    case View::Posterior: return "posterior";
+    case View::Left: return "left";
+    case View::Right: return "right";
+    case View::Superior: return "superior";
+    case View::Inferior: return "inferior";
+  }
+  return "";
+}
+} // namespace
+
+void WriteSnapshot(const std::vector<SnapshotLayer>& layers, const SnapshotOptions& o, const std::string& pngPath)
+{
+  const char* display = std::getenv("DISPLAY");
+  if (display == nullptr || *display == '\0')
+    throw std::runtime_error("no X display for rendering " + pngPath + ": run under xvfb-run -a");
+  if (o.views.empty())
+    throw std::runtime_error("no view requested for " + pngPath);
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  const int n = static_cast<int>(o.views.size());
+  window->SetSize(o.viewWidth * n, o.viewHeight);
+
+  for (int i = 0; i < n; ++i)
+  {
+    vtkNew<vtkRenderer> renderer;
+    renderer->SetViewport(double(i) / n, 0, double(i + 1) / n, 1);
+    renderer->SetBackground(1, 1, 1);
+    for (const auto& layer : layers)
+    {
+      if (layer.surface == nullptr)
+        continue;
+      vtkNew<vtkPolyDataMapper> mapper;
+      mapper->SetInputData(layer.surface);
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      actor->GetProperty()->SetColor(layer.color.data());
+      actor->GetProperty()->SetOpacity(layer.opacity);
+      actor->GetProperty()->SetLineWidth(layer.lineWidth);
+      if (layer.wireframe)
+        actor->GetProperty()->SetRepresentationToWireframe();
+      if (layer.pointSize > 0)
+      {
+        actor->GetProperty()->SetRepresentationToPoints();
+        actor->GetProperty()->SetPointSize(layer.pointSize);
+        actor->GetProperty()->RenderPointsAsSpheresOn();
+      }
+      if (!layer.scalars.empty() && layer.surface->GetPointData()->GetArray(layer.scalars.c_str()))
+      {
+        vtkNew<vtkLookupTable> lut; // blue (good) to red (bad)
+        lut->SetHueRange(0.667, 0.0);
+        lut->SetTableRange(layer.range[0], layer.range[1]);
+        lut->Build();
+        mapper->SetLookupTable(lut);
+        mapper->SetScalarModeToUsePointFieldData();
+        mapper->SelectColorArray(layer.scalars.c_str());
+        mapper->SetScalarRange(layer.range[0], layer.range[1]);
+        mapper->ScalarVisibilityOn();
+        if (i == n - 1)
+        {
+          vtkNew<vtkScalarBarActor> bar;
+          bar->SetLookupTable(lut);
+          bar->SetTitle(layer.scalarTitle.empty() ? layer.scalars.c_str() : layer.scalarTitle.c_str());
+          bar->SetNumberOfLabels(5);
+          bar->SetWidth(0.12);
+          bar->SetHeight(0.5);
+          bar->SetPosition(0.86, 0.1);
+          bar->GetTitleTextProperty()->SetColor(0, 0, 0);
+          bar->GetLabelTextProperty()->SetColor(0, 0, 0);
+          renderer->AddActor2D(bar);
+        }
+      }
+      else
+      {
+        mapper->ScalarVisibilityOff();
+      }
+      renderer->AddActor(actor);
+    }
+    double dir[3], up[3];
+    ViewVectors(o.views[i], dir, up);
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->SetFocalPoint(0, 0, 0);
+    camera->SetPosition(dir);
+    camera->SetViewUp(up);
+    camera->ParallelProjectionOn();
+    const auto& f = o.focus;
+    if (f[0] <= f[1] && f[2] <= f[3] && f[4] <= f[5])
+      renderer->ResetCamera(const_cast<double*>(f.data()));
+    else
+      renderer->ResetCamera();
+
+    vtkNew<vtkTextActor> label;
+    label->SetInput((i == 0 && !o.title.empty() ? o.title + " - " : std::string()).append(ViewName(o.views[i])).c_str());
+    label->GetTextProperty()->SetColor(0, 0, 0);
+    label->GetTextProperty()->SetFontSize(16);
+    label->SetDisplayPosition(8, o.viewHeight - 24);
+    renderer->AddActor2D(label);
+    window->AddRenderer(renderer);
+  }
+  window->Render();
+
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkNew<vtkPNGWriter> png;
+  png->SetFileName(pngPath.c_str());
+  png->SetInputConnection(grab->GetOutputPort());
+  png->Write();
+  if (png->GetErrorCode() != 0)
+    throw std::runtime_error("cannot write " + pngPath);
+}
+
+} // namespace mmrep
