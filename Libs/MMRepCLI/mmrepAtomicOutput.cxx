@@ -1,0 +1,74 @@
+// All-or-nothing output files: write a temporary sibling, rename it over the final path on success.
+#include "mmrepCLIInternal.h"
+
+#include <atomic>
+#include <filesystem>
+#include <system_error>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace mmrep::cli
+{
+
+std::string FileExtension(const std::string& path)
+{
+  const std::string name = detail::Lower(fs::path(path).filename().string());
+  // Compound extensions whose last part alone does not say the format.
+  for (const char* twoPart : {".nii.gz", ".mrk.json", ".seg.nrrd"})
+  {
+    const std::string ext = twoPart;
+    if (name.size() > ext.size() && name.compare(name.size() - ext.size(), ext.size(), ext) == 0) return ext;
+  }
+  const auto dot = name.rfind('.');
+  if (dot == std::string::npos || dot == 0) return {};
+  if (name.compare(dot, std::string::npos, ".gz") == 0) // .vtk.gz, .nrrd.gz, ...
+  {
+    const auto previous = name.rfind('.', dot - 1);
+    if (previous != std::string::npos && previous > 0) return name.substr(previous);
+  }
+  return name.substr(dot);
+}
+
+AtomicOutput::AtomicOutput(std::string finalPath) : final_(std::move(finalPath))
+{
+  if (final_.empty()) throw ModuleError("output file name is empty");
+  const fs::path target(final_);
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec))
+    throw ModuleError("cannot write '" + final_ + "': folder '" + folder.string() + "' does not exist");
+  if (::access(folder.c_str(), W_OK) != 0)
+    throw ModuleError("cannot write '" + final_ + "': folder '" + folder.string() + "' is not writable");
+  if (fs::is_directory(target, ec)) throw ModuleError("cannot write '" + final_ + "': it is a folder");
+
+  // Same folder (so the rename is atomic), same extension (so writers pick the same format).
+  static std::atomic<unsigned> counter{0};
+  const std::string ext = FileExtension(final_);
+  const std::string name = target.filename().string();
+  const std::string stem = name.substr(0, name.size() - ext.size());
+  temp_ = (folder / (stem + ".mmrep-tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) +
+                     name.substr(name.size() - ext.size())))
+              .string();
+}
+
+AtomicOutput::~AtomicOutput()
+{
+  if (!committed_)
+  {
+    std::error_code ec;
+    fs::remove(temp_, ec); // best effort: nothing useful to do if it fails
+  }
+}
+
+void AtomicOutput::Commit()
+{
+  if (committed_) return;
+  std::error_code ec;
+  if (!fs::exists(temp_, ec)) throw ModuleError("cannot write '" + final_ + "': nothing was written");
+  fs::rename(temp_, final_, ec);
+  if (ec) throw ModuleError("cannot write '" + final_ + "': " + ec.message());
+  committed_ = true;
+}
+
+} // namespace mmrep::cli

@@ -1,0 +1,28 @@
+// Helpers shared by the MMRepCLI sources (not part of the public API).
+#pragma once
+
+#include "mmrepCLI.h"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace mmrep::cli::detail
+{
+
+std::string Trim(std::string_view text);
+std::string Lower(std::string text);
+// "1, 2,3" -> {"1","2","3"}; Slicer passes vectors, points and regions comma-separated.
+std::vector<std::string> SplitComma(const std::string& text);
+// Whole-string, locale-independent number parsing ("+3", "-2.5e3"); false on any trailing junk.
+bool ParseInt(const std::string& text, long long& value);
+bool ParseDouble(const std::string& text, double& value);
+bool ParseBool(const std::string& text, bool& value);
+// Shortest text that reads back to the same double.
+std::string FormatDouble(double value);
+// How a parameter is named in messages: "'iterations' (--iterations)".
+std::string Describe(const Parameter& p);
+// Throws ModuleError naming the parameter when a value does not fit its declaration.
+void Validate(const Parameter& p, const std::vector<std::string>& values);
+
+} // namespace mmrep::cli::detail

@@ -1,0 +1,120 @@
+// Abaqus / CalculiX input deck (.inp): mesh and sets only, no material or step, so the file can be
+// *INCLUDEd from an analysis deck. Ids are 1-based: node id = node index + 1, element id =
+// element index + 1 (solids and cables share one numbering, as Abaqus requires).
+#include "mmrepFEExport.h"
+
+#include <algorithm>
+
+namespace mmrep::detail
+{
+namespace
+{
+
+// Abaqus allows at most 16 entries per data line of *NSET/*ELSET.
+void WriteIdLines(std::ostream& out, const std::vector<std::int32_t>& ids)
+{
+  for (std::size_t i = 0; i < ids.size(); ++i)
+  {
+    out << ids[i] + 1;
+    out << ((i % 16 == 15 || i + 1 == ids.size()) ? "\n" : ", ");
+  }
+}
+
+void WriteSet(std::ostream& out, const char* keyword, const std::string& name, const std::string& origin,
+              const std::vector<std::int32_t>& ids)
+{
+  std::string comment = origin; // raw user names: keep control characters out of the deck
+  for (auto& c : comment)
+    if (static_cast<unsigned char>(c) < 0x20)
+      c = '?';
+  if (ids.empty())
+  {
+    // Abaqus and CalculiX reject a set without members.
+    out << "** empty " << comment << " omitted\n";
+    return;
+  }
+  out << "** " << comment << "\n";
+  out << "*" << keyword << ", " << keyword << "=" << name << "\n";
+  WriteIdLines(out, ids);
+}
+
+struct TypeBlock
+{
+  ElementType type;
+  const char* abaqusType;
+  const char* setName;
+};
+
+} // namespace
+
+void WriteAbaqus(const FEMesh& mesh, std::ostream& out)
+{
+  const ExportNames names = MakeExportNames(mesh);
+  out << "** MMRep FE face model: " << mesh.nodes.size() << " nodes, " << mesh.elements.size()
+      << " elements; coordinates in mm (LPS)\n";
+  out << "** ids are 1-based: node/element id = MMRep index + 1\n";
+  out << "*NODE, NSET=NALL\n";
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
+  {
+    const auto& p = mesh.nodes[i];
+    out << i + 1 << ", " << FormatDouble(p.x()) << ", " << FormatDouble(p.y()) << ", " << FormatDouble(p.z()) << "\n";
+  }
+
+  // Fixed set names per element type; MakeExportNames reserves them so user sets never reuse them.
+  const TypeBlock blocks[] = {{ElementType::Hexahedron, "C3D8", "EHEX"},
+                              {ElementType::Wedge, "C3D6", "EWEDGE"},
+                              {ElementType::Tetrahedron, "C3D4", "ETET"},
+                              {ElementType::Cable, "T3D2", "ECABLE"}};
+  std::vector<std::string> solidBlocks;
+  for (const auto& block : blocks)
+  {
+    std::vector<std::size_t> ids;
+    for (std::size_t i = 0; i < mesh.elements.size(); ++i)
+      if (mesh.elements[i].type == block.type)
+        ids.push_back(i);
+    if (ids.empty())
+      continue;
+    out << "*ELEMENT, TYPE=" << block.abaqusType << ", ELSET=" << block.setName << "\n";
+    for (auto i : ids)
+    {
+      out << i + 1;
+      for (auto node : SolverNodeOrder(mesh.elements[i]))
+        out << ", " << node + 1;
+      out << "\n";
+    }
+    if (block.type != ElementType::Cable)
+      solidBlocks.push_back(block.setName);
+  }
+  if (!solidBlocks.empty())
+  {
+    out << "** all solid elements\n*ELSET, ELSET=ESOLID\n";
+    for (std::size_t k = 0; k < solidBlocks.size(); ++k)
+      out << solidBlocks[k] << (k + 1 == solidBlocks.size() ? "\n" : ", ");
+  }
+
+  std::size_t k = 0;
+  for (const auto& [name, ids] : mesh.nodeSets)
+    WriteSet(out, "NSET", names.nodeSets[k++], "node set '" + name + "'", ids);
+  k = 0;
+  for (const auto& [name, ids] : mesh.elementSets)
+    WriteSet(out, "ELSET", names.elementSets[k++], "element set '" + name + "'", ids);
+  for (auto layer : {TissueLayer::None, TissueLayer::Epidermis, TissueLayer::Dermis, TissueLayer::Hypodermis})
+  {
+    std::vector<std::int32_t> ids;
+    for (std::size_t i = 0; i < mesh.elements.size(); ++i)
+      if (mesh.elements[i].type != ElementType::Cable && mesh.elements[i].layer == layer)
+        ids.push_back(static_cast<std::int32_t>(i));
+    if (!ids.empty())
+      WriteSet(out, "ELSET", names.layers[static_cast<int>(layer)],
+               std::string("tissue layer ") + TissueLayerName(layer), ids);
+  }
+  k = 0;
+  for (const auto& [name, muscle] : mesh.muscles)
+  {
+    WriteSet(out, "NSET", names.muscleNodes[k], "muscle '" + name + "' track nodes", muscle.nodes);
+    WriteSet(out, "ELSET", names.muscles[k], "muscle '" + name + "' cables", muscle.cables);
+    ++k;
+  }
+}
+
+} // namespace mmrep::detail

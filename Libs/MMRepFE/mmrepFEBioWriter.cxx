@@ -1,0 +1,126 @@
+// FEBio input (.feb, format 3.0): the <Mesh> section only (nodes, element parts, node and element
+// sets), to be completed with materials, MeshDomains and steps in FEBio Studio or a template.
+// Parts: one per (tissue layer, solid type), named "<layer set>_<type>" (layer_epidermis_hex8, …),
+// and one part "ECABLE" of line2 elements for all muscle cables. Ids are 1-based: node id = node
+// index + 1, element id = element index + 1 across all parts.
+#include "mmrepFEExport.h"
+
+namespace mmrep::detail
+{
+namespace
+{
+
+const char* FEBioType(ElementType type)
+{
+  switch (type)
+  {
+    case ElementType::Hexahedron: return "hex8";
+    case ElementType::Wedge: return "penta6";
+    case ElementType::Tetrahedron: return "tet4";
+    case ElementType::Cable: return "line2";
+  }
+  return "";
+}
+
+void WriteNodeSet(std::ostream& out, const std::string& name, const std::vector<std::int32_t>& ids)
+{
+  out << "    <NodeSet name=\"" << name << "\">\n";
+  for (auto id : ids)
+    out << "      <n id=\"" << id + 1 << "\"/>\n";
+  out << "    </NodeSet>\n";
+}
+
+void WriteElementSet(std::ostream& out, const std::string& name, const std::vector<std::int32_t>& ids)
+{
+  out << "    <ElementSet name=\"" << name << "\">\n";
+  for (auto id : ids)
+    out << "      <e id=\"" << id + 1 << "\"/>\n";
+  out << "    </ElementSet>\n";
+}
+
+} // namespace
+
+void WriteFEBio(const FEMesh& mesh, std::ostream& out)
+{
+  const ExportNames names = MakeExportNames(mesh);
+  // Part names share FEBio's element-set namespace: register every set name first.
+  NameRegistry partNames;
+  for (const char* reserved : {"EHEX", "EWEDGE", "ETET", "ECABLE", "ESOLID"})
+    partNames.Add(reserved);
+  for (const auto& name : names.elementSets)
+    partNames.Add(name);
+  for (const auto& name : names.layers)
+    partNames.Add(name);
+  for (const auto& name : names.muscles)
+    partNames.Add(name);
+
+  out << "<?xml version=\"1.0\" encoding=\"ISO-8859-1\"?>\n";
+  out << "<febio_spec version=\"3.0\">\n";
+  out << "  <!-- MMRep FE face model: " << mesh.nodes.size() << " nodes, " << mesh.elements.size()
+      << " elements; mm, LPS; ids are MMRep indices + 1 -->\n";
+  out << "  <Module type=\"solid\"/>\n";
+  out << "  <Mesh>\n";
+  out << "    <Nodes name=\"NALL\">\n";
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
+  {
+    const auto& p = mesh.nodes[i];
+    out << "      <node id=\"" << i + 1 << "\">" << FormatDouble(p.x()) << "," << FormatDouble(p.y()) << ","
+        << FormatDouble(p.z()) << "</node>\n";
+  }
+  out << "    </Nodes>\n";
+
+  auto writePart = [&](const std::string& name, ElementType type, const std::vector<std::size_t>& ids) {
+    out << "    <Elements type=\"" << FEBioType(type) << "\" name=\"" << name << "\">\n";
+    for (auto i : ids)
+    {
+      out << "      <elem id=\"" << i + 1 << "\">";
+      const auto nodes = SolverNodeOrder(mesh.elements[i]);
+      for (std::size_t k = 0; k < nodes.size(); ++k)
+        out << (k ? "," : "") << nodes[k] + 1;
+      out << "</elem>\n";
+    }
+    out << "    </Elements>\n";
+  };
+  for (auto layer : {TissueLayer::None, TissueLayer::Epidermis, TissueLayer::Dermis, TissueLayer::Hypodermis})
+    for (auto type : {ElementType::Hexahedron, ElementType::Wedge, ElementType::Tetrahedron})
+    {
+      std::vector<std::size_t> ids;
+      for (std::size_t i = 0; i < mesh.elements.size(); ++i)
+        if (mesh.elements[i].type == type && mesh.elements[i].layer == layer)
+          ids.push_back(i);
+      if (!ids.empty())
+        writePart(partNames.Add(names.layers[static_cast<int>(layer)] + "_" + FEBioType(type)), type, ids);
+    }
+  std::vector<std::size_t> cables;
+  for (std::size_t i = 0; i < mesh.elements.size(); ++i)
+    if (mesh.elements[i].type == ElementType::Cable)
+      cables.push_back(i);
+  if (!cables.empty())
+    writePart("ECABLE", ElementType::Cable, cables);
+
+  std::size_t k = 0;
+  for (const auto& entry : mesh.nodeSets)
+    WriteNodeSet(out, names.nodeSets[k++], entry.second);
+  k = 0;
+  for (const auto& entry : mesh.muscles)
+    WriteNodeSet(out, names.muscleNodes[k++], entry.second.nodes);
+  k = 0;
+  for (const auto& entry : mesh.elementSets)
+    WriteElementSet(out, names.elementSets[k++], entry.second);
+  for (auto layer : {TissueLayer::None, TissueLayer::Epidermis, TissueLayer::Dermis, TissueLayer::Hypodermis})
+  {
+    std::vector<std::int32_t> ids;
+    for (std::size_t i = 0; i < mesh.elements.size(); ++i)
+      if (mesh.elements[i].type != ElementType::Cable && mesh.elements[i].layer == layer)
+        ids.push_back(static_cast<std::int32_t>(i));
+    if (!ids.empty())
+      WriteElementSet(out, names.layers[static_cast<int>(layer)], ids);
+  }
+  k = 0;
+  for (const auto& entry : mesh.muscles)
+    WriteElementSet(out, names.muscles[k++], entry.second.cables);
+  out << "  </Mesh>\n";
+  out << "</febio_spec>\n";
+}
+
+} // namespace mmrep::detail

@@ -1,0 +1,25 @@
+// A fresh scratch folder per test inside the build tree.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace mmrep
+{
+namespace test
+{
+
+inline std::filesystem::path ScratchDir()
+{
+  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::filesystem::path dir = std::filesystem::path(MMREP_BINARY_DIR) / "Testing" / "Temporary" /
+    (std::string(info->test_suite_name()) + "." + info->name());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+} // namespace test
+} // namespace mmrep

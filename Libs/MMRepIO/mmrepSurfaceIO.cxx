@@ -1,0 +1,263 @@
+// Triangle surfaces through VTK's readers and writers, chosen by file extension.
+#include "mmrepSurfaceIO.h"
+
+#include "mmrepIOPath.h"
+
+#include <vtkAlgorithm.h>
+#include <vtkCellArray.h>
+#include <vtkCommand.h>
+#include <vtkErrorCode.h>
+#include <vtkNew.h>
+#include <vtkOBJReader.h>
+#include <vtkOBJWriter.h>
+#include <vtkPLYReader.h>
+#include <vtkPLYWriter.h>
+#include <vtkPoints.h>
+#include <vtkPolyDataReader.h>
+#include <vtkPolyDataWriter.h>
+#include <vtkSTLReader.h>
+#include <vtkSTLWriter.h>
+#include <vtkTriangleFilter.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLPolyDataWriter.h>
+#include <vtksys/SystemTools.hxx>
+
+#include <functional>
+#include <stdexcept>
+
+namespace mmrep
+{
+namespace
+{
+
+[[noreturn]] void Fail(const std::string& path, const std::string& what)
+{
+  throw std::runtime_error("'" + path + "': " + what);
+}
+
+// VTK reports problems through ErrorEvent/WarningEvent instead of exceptions; collect the
+// first message (and keep it off stderr) so it can go into the thrown error.
+class ErrorCollector : public vtkCommand
+{
+public:
+  static ErrorCollector* New() { return new ErrorCollector; }
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    if (event == vtkCommand::ErrorEvent && message.empty())
+    {
+      message = data ? static_cast<const char*>(data) : "unknown VTK error";
+      while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
+      {
+        message.pop_back();
+      }
+      // VTK prefixes messages with a source-location line; keep the last line.
+      const std::size_t nl = message.find_last_of('\n');
+      if (nl != std::string::npos)
+      {
+        message = message.substr(nl + 1);
+      }
+    }
+  }
+  std::string message;
+};
+
+void Watch(vtkAlgorithm* algorithm, ErrorCollector* collector)
+{
+  algorithm->AddObserver(vtkCommand::ErrorEvent, collector);
+  algorithm->AddObserver(vtkCommand::WarningEvent, collector);
+}
+
+std::string SurfaceFormat(const std::string& path)
+{
+  for (const char* ext : { "vtp", "vtk", "stl", "ply", "obj" })
+  {
+    if (io::Extension(path) == ext)
+    {
+      return ext;
+    }
+  }
+  return {};
+}
+
+// Slicer writes "SPACE=RAS" or "SPACE=LPS" in the legacy header; only RAS needs converting.
+void FlipXY(vtkPolyData* surface)
+{
+  vtkPoints* points = surface->GetPoints();
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    points->SetPoint(i, -p[0], -p[1], p[2]);
+  }
+  points->Modified();
+}
+
+} // namespace
+
+vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path)
+{
+  if (!vtksys::SystemTools::FileExists(path, true))
+  {
+    Fail(path, "surface file does not exist");
+  }
+  const std::string format = SurfaceFormat(path);
+  vtkNew<ErrorCollector> errors;
+  vtkSmartPointer<vtkAlgorithm> reader;
+  vtkSmartPointer<vtkPolyDataReader> legacy;
+  if (format == "vtp")
+  {
+    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (format == "vtk")
+  {
+    legacy = vtkSmartPointer<vtkPolyDataReader>::New();
+    legacy->SetFileName(path.c_str());
+    reader = legacy;
+  }
+  else if (format == "stl")
+  {
+    auto r = vtkSmartPointer<vtkSTLReader>::New();
+    r->SetFileName(path.c_str());
+    r->MergingOn(); // STL repeats the corners of every facet
+    reader = r;
+  }
+  else if (format == "ply")
+  {
+    auto r = vtkSmartPointer<vtkPLYReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (format == "obj")
+  {
+    auto r = vtkSmartPointer<vtkOBJReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else
+  {
+    Fail(path, "unknown surface file extension (supported: .vtp, .vtk, .stl, .ply, .obj)");
+  }
+  Watch(reader, errors);
+  reader->Update();
+  if (!errors->message.empty() || reader->GetErrorCode() != vtkErrorCode::NoError)
+  {
+    const std::string why = !errors->message.empty()
+      ? errors->message
+      : vtkErrorCode::GetStringFromErrorCode(static_cast<int>(reader->GetErrorCode()));
+    Fail(path, "cannot read surface: " + why);
+  }
+  vtkPolyData* output = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (output == nullptr || output->GetNumberOfPoints() == 0)
+  {
+    Fail(path, "surface file contains no points");
+  }
+  auto surface = vtkSmartPointer<vtkPolyData>::New();
+  surface->DeepCopy(output);
+  if (legacy && legacy->GetHeader() && std::string(legacy->GetHeader()).find("SPACE=RAS") != std::string::npos)
+  {
+    FlipXY(surface);
+  }
+  return surface;
+}
+
+void WriteSurface(vtkPolyData* surface, const std::string& path)
+{
+  const std::string format = SurfaceFormat(path);
+  if (format.empty())
+  {
+    Fail(path, "unknown surface file extension (supported: .vtp, .vtk, .stl, .ply, .obj)");
+  }
+  WriteSurface(surface, path, format);
+}
+
+void WriteSurface(vtkPolyData* surface, const std::string& path, const std::string& formatName)
+{
+  if (surface == nullptr)
+  {
+    throw std::invalid_argument("WriteSurface: null surface for '" + path + "'");
+  }
+  std::string format = io::Lower(formatName);
+  if (!format.empty() && format[0] == '.')
+  {
+    format = format.substr(1);
+  }
+  vtkNew<ErrorCollector> errors;
+  vtkSmartPointer<vtkAlgorithm> writer;
+  std::function<int()> write;
+  if (format == "vtp")
+  {
+    auto w = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+    w->SetInputData(surface);
+    w->SetFileName(path.c_str());
+    writer = w;
+    write = [w] { return w->Write(); };
+  }
+  else if (format == "vtk")
+  {
+    auto w = vtkSmartPointer<vtkPolyDataWriter>::New();
+    w->SetInputData(surface);
+    w->SetFileName(path.c_str());
+    w->SetFileTypeToBinary(); // full double precision
+    w->SetHeader("MMRep surface SPACE=LPS");
+    writer = w;
+    write = [w] { return w->Write(); };
+  }
+  else if (format == "stl" || format == "ply" || format == "obj")
+  {
+    // These formats hold triangles/polygons only; triangulate strips and polygons for STL.
+    vtkSmartPointer<vtkPolyData> input = surface;
+    if (format == "stl")
+    {
+      vtkNew<vtkTriangleFilter> triangles;
+      triangles->SetInputData(surface);
+      triangles->PassVertsOff();
+      triangles->PassLinesOff();
+      triangles->Update();
+      input = triangles->GetOutput();
+    }
+    if (format == "stl")
+    {
+      auto w = vtkSmartPointer<vtkSTLWriter>::New();
+      w->SetFileTypeToBinary();
+      w->SetInputData(input);
+      w->SetFileName(path.c_str());
+      writer = w;
+      write = [w] { return w->Write(); };
+    }
+    else if (format == "ply")
+    {
+      auto w = vtkSmartPointer<vtkPLYWriter>::New();
+      w->SetFileTypeToBinary();
+      w->SetInputData(input);
+      w->SetFileName(path.c_str());
+      writer = w;
+      write = [w] { return w->Write(); };
+    }
+    else
+    {
+      auto w = vtkSmartPointer<vtkOBJWriter>::New();
+      w->SetInputData(input);
+      w->SetFileName(path.c_str());
+      writer = w;
+      write = [w] { return w->Write(); };
+    }
+  }
+  else
+  {
+    Fail(path, "unknown surface format '" + formatName + "' (supported: vtp, vtk, stl, ply, obj)");
+  }
+  Watch(writer, errors);
+  const int ok = write();
+  if (!ok || !errors->message.empty() || writer->GetErrorCode() != vtkErrorCode::NoError)
+  {
+    vtksys::SystemTools::RemoveFile(path); // never leave a partial file behind
+    const std::string why = !errors->message.empty()
+      ? errors->message
+      : vtkErrorCode::GetStringFromErrorCode(static_cast<int>(writer->GetErrorCode()));
+    Fail(path, "cannot write surface: " + why);
+  }
+}
+
+} // namespace mmrep
