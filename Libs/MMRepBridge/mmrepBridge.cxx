@@ -140,17 +140,34 @@ vtkSmartPointer<vtkPolyData> ITKMeshToPolyData(const SurfaceMesh* mesh)
   {
     throw std::invalid_argument("ITKMeshToPolyData: null mesh");
   }
-  // ITK point identifiers may be sparse; VTK ids are 0..n-1 in identifier order.
+  // ITK point identifiers may be sparse; VTK ids are 0..n-1 in identifier order. Filters such as
+  // our Marching Cubes number them 0..n-1 already: then the map is skipped (large surfaces).
+  const auto* itkPoints = mesh->GetPoints();
+  const vtkIdType pointCount = itkPoints ? static_cast<vtkIdType>(itkPoints->Size()) : 0;
+  bool dense = true;
   std::map<SurfaceMesh::PointIdentifier, vtkIdType> vtkId;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  for (auto it = mesh->GetPoints()->Begin(); it != mesh->GetPoints()->End(); ++it)
+  points->SetNumberOfPoints(pointCount);
+  if (itkPoints != nullptr)
   {
-    vtkId[it->Index()] = points->InsertNextPoint(it->Value()[0], it->Value()[1], it->Value()[2]);
+    vtkIdType next = 0;
+    for (auto it = itkPoints->Begin(); it != itkPoints->End(); ++it, ++next)
+    {
+      dense = dense && it->Index() == static_cast<SurfaceMesh::PointIdentifier>(next);
+      points->SetPoint(next, it->Value()[0], it->Value()[1], it->Value()[2]);
+    }
+    if (!dense)
+    {
+      next = 0;
+      for (auto it = itkPoints->Begin(); it != itkPoints->End(); ++it)
+        vtkId[it->Index()] = next++;
+    }
   }
   vtkNew<vtkCellArray> triangles;
   if (mesh->GetCells() != nullptr)
   {
+    triangles->AllocateExact(mesh->GetCells()->Size(), 3 * mesh->GetCells()->Size());
     for (auto it = mesh->GetCells()->Begin(); it != mesh->GetCells()->End(); ++it)
     {
       const SurfaceMesh::CellType* cell = it->Value();
@@ -163,6 +180,14 @@ vtkSmartPointer<vtkPolyData> ITKMeshToPolyData(const SurfaceMesh* mesh)
       int k = 0;
       for (auto p = cell->PointIdsBegin(); p != cell->PointIdsEnd(); ++p)
       {
+        if (dense)
+        {
+          if (*p >= static_cast<SurfaceMesh::PointIdentifier>(pointCount))
+            throw std::invalid_argument("ITKMeshToPolyData: cell " + std::to_string(it->Index()) +
+                                        " uses an unknown point");
+          ids[k++] = static_cast<vtkIdType>(*p);
+          continue;
+        }
         const auto found = vtkId.find(*p);
         if (found == vtkId.end())
         {

@@ -25,4 +25,7 @@ std::string Describe(const Parameter& p);
 // Throws ModuleError naming the parameter when a value does not fit its declaration.
 void Validate(const Parameter& p, const std::vector<std::string>& values);
 
+// Silences ITK's and VTK's own console output for the rest of the process (see mmrepQuietConsoles.cxx).
+void SilenceToolkitConsoles();
+
 } // namespace mmrep::cli::detail

@@ -236,6 +236,7 @@ int RunModule(int argc, char* argv[], const char* xmlDescription, const std::fun
       return 0;
     }
 
+  detail::SilenceToolkitConsoles();
   ModuleDescription description;
   try
   {

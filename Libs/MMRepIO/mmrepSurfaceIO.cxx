@@ -191,6 +191,8 @@ void WriteSurface(vtkPolyData* surface, const std::string& path, const std::stri
     auto w = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
     w->SetInputData(surface);
     w->SetFileName(path.c_str());
+    // LZ4: files about as small as zlib's for meshes, compressed several times faster (VTK >= 8 reads it).
+    w->SetCompressorTypeToLZ4();
     writer = w;
     write = [w] { return w->Write(); };
   }

@@ -1,7 +1,7 @@
 #include "mmrepHeadSegmentation.h"
 
-#include <itkBinaryBallStructuringElement.h>
-#include <itkBinaryMorphologicalOpeningImageFilter.h>
+#include "itkSaitoToriwakiDistanceMapImageFilter.h"
+
 #include <itkBinaryThresholdImageFilter.h>
 #include <itkConnectedComponentImageFilter.h>
 #include <itkRelabelComponentImageFilter.h>
@@ -154,6 +154,51 @@ void FillEnclosedBackground(MaskImage* mask, bool axialSlices, unsigned int axis
   }
 }
 
+namespace
+{
+// Voxel distance (index units) from every voxel to the nearest voxel equal to `value`.
+FloatImage::Pointer IndexDistanceTo(const MaskImage* mask, unsigned char value)
+{
+  using EDT = itk::SaitoToriwakiDistanceMapImageFilter<MaskImage, FloatImage>;
+  auto edt = EDT::New();
+  edt->SetInput(mask);
+  edt->SetUseImageSpacing(false);
+  edt->SetSquaredDistance(true);
+  edt->SetForegroundValue(value);
+  edt->Update();
+  return edt->GetOutput();
+}
+} // namespace
+
+void OpenWithBall(MaskImage* mask, unsigned int radius)
+{
+  const std::size_t n = mask->GetBufferedRegion().GetNumberOfPixels();
+  unsigned char* m = mask->GetBufferPointer();
+  std::size_t background = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    background += m[i] == 0;
+  if (background == 0 || background == n)
+    return; // nothing to erode from, or nothing to open
+  const float r2 = static_cast<float>(radius) * static_cast<float>(radius);
+  // Erosion: keep voxels farther than r from the background.
+  {
+    auto toBackground = IndexDistanceTo(mask, 0);
+    const float* d = toBackground->GetBufferPointer();
+    for (std::size_t i = 0; i < n; ++i)
+      m[i] = d[i] > r2;
+  }
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    kept += m[i];
+  if (kept == 0)
+    return; // everything thinner than the ball: the opening is empty
+  // Dilation: voxels within r of the eroded set.
+  auto toEroded = IndexDistanceTo(mask, 1);
+  const float* d = toEroded->GetBufferPointer();
+  for (std::size_t i = 0; i < n; ++i)
+    m[i] = d[i] <= r2;
+}
+
 std::size_t KeepLargestComponent(MaskImage::Pointer& mask)
 {
   using LabelImage = itk::Image<unsigned int, 3>;
@@ -193,20 +238,7 @@ HeadSegmentation SegmentHead(const CTImage* ct, const HeadSegmentationOptions& o
   }
   report(0.1);
   if (o.openingRadius > 0)
-  {
-    using Ball = itk::BinaryBallStructuringElement<unsigned char, 3>;
-    Ball ball;
-    ball.SetRadius(o.openingRadius);
-    ball.CreateStructuringElement();
-    auto open = itk::BinaryMorphologicalOpeningImageFilter<MaskImage, MaskImage, Ball>::New();
-    open->SetInput(skin);
-    open->SetKernel(ball);
-    open->SetForegroundValue(1);
-    open->SetBackgroundValue(0);
-    open->Update();
-    skin = open->GetOutput();
-    skin->DisconnectPipeline();
-  }
+    OpenWithBall(skin, o.openingRadius);
   report(0.35);
   const std::size_t skinVoxels = KeepLargestComponent(skin);
   result.skinVolume = skinVoxels * VoxelVolume(skin);

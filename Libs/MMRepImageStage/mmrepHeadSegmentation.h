@@ -44,6 +44,11 @@ unsigned int AxialAxis(const itk::ImageBase<3>* image);
 // then also every background pixel not 4-connected to the border of its slice along `axis`.
 void FillEnclosedBackground(MaskImage* mask, bool axialSlices, unsigned int axis);
 
+// Binary opening by a Euclidean ball of `radius` voxels (index units), exact: erosion and dilation
+// are thresholds of Saito–Toriwaki distance maps. An opening that would remove everything leaves
+// the mask empty.
+void OpenWithBall(MaskImage* mask, unsigned int radius);
+
 // Keeps only the largest 6-connected foreground component; returns its voxel count (0 if none).
 std::size_t KeepLargestComponent(MaskImage::Pointer& mask);
 

@@ -85,7 +85,7 @@ void WriteSnapshot(const std::vector<SnapshotLayer>& layers, const SnapshotOptio
       mapper->SetInputData(layer.surface);
       vtkNew<vtkActor> actor;
       actor->SetMapper(mapper);
-      actor->GetProperty()->SetColor(layer.color.data());
+      actor->GetProperty()->SetColor(layer.color[0], layer.color[1], layer.color[2]);
       actor->GetProperty()->SetOpacity(layer.opacity);
       actor->GetProperty()->SetLineWidth(layer.lineWidth);
       if (layer.wireframe)

@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 
 namespace
 {
@@ -235,5 +236,76 @@ TEST(ImageStageHeadErrors, EmptySegmentationAndNoHead)
   catch (const std::runtime_error& e)
   {
     EXPECT_NE(std::string(e.what()).find("no head"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ImageStageOpening, EqualsBruteForceBallOpening)
+{
+  // Random blobs with thin bridges; opening by a Euclidean ball of radius r (index units) computed
+  // by brute force: erosion keeps p when every voxel within r is set (outside counts as set, as
+  // the distance transform only sees background inside the image), dilation sets p when an eroded
+  // voxel lies within r.
+  const int n = 18;
+  std::mt19937 rng(3);
+  for (unsigned r : {1u, 2u})
+  {
+    auto m = NewMask(n, n, n);
+    auto at = [&](mmrep::MaskImage* img, int i, int j, int k) -> unsigned char& {
+      return img->GetBufferPointer()[i + n * (j + n * k)];
+    };
+    for (int b = 0; b < 6; ++b)
+    {
+      const int ci = rng() % n, cj = rng() % n, ck = rng() % n, rad = 2 + rng() % 4;
+      for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j)
+          for (int i = 0; i < n; ++i)
+            if ((i - ci) * (i - ci) + (j - cj) * (j - cj) + (k - ck) * (k - ck) <= rad * rad)
+              at(m, i, j, k) = 1;
+    }
+    for (int i = 0; i < n; ++i) // a one-voxel bridge the opening must remove
+      at(m, i, n / 2, n / 2) = 1;
+    auto eroded = NewMask(n, n, n), expected = NewMask(n, n, n);
+    const int R = static_cast<int>(r);
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+        {
+          bool keep = true;
+          for (int dk = -R; dk <= R && keep; ++dk)
+            for (int dj = -R; dj <= R && keep; ++dj)
+              for (int di = -R; di <= R && keep; ++di)
+              {
+                const int x = i + di, y = j + dj, z = k + dk;
+                if (di * di + dj * dj + dk * dk > R * R || x < 0 || y < 0 || z < 0 || x >= n || y >= n || z >= n)
+                  continue;
+                keep = at(m, x, y, z) != 0;
+              }
+          at(eroded, i, j, k) = keep;
+        }
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+        {
+          bool set = false;
+          for (int dk = -R; dk <= R && !set; ++dk)
+            for (int dj = -R; dj <= R && !set; ++dj)
+              for (int di = -R; di <= R && !set; ++di)
+              {
+                const int x = i + di, y = j + dj, z = k + dk;
+                if (di * di + dj * dj + dk * dk > R * R || x < 0 || y < 0 || z < 0 || x >= n || y >= n || z >= n)
+                  continue;
+                set = at(eroded, x, y, z) != 0;
+              }
+          at(expected, i, j, k) = set;
+        }
+    mmrep::OpenWithBall(m, r);
+    std::size_t differences = 0, kept = 0;
+    for (int v = 0; v < n * n * n; ++v)
+    {
+      differences += m->GetBufferPointer()[v] != expected->GetBufferPointer()[v];
+      kept += expected->GetBufferPointer()[v];
+    }
+    EXPECT_GT(kept, 0u) << "radius " << r;
+    EXPECT_EQ(differences, 0u) << "radius " << r;
   }
 }

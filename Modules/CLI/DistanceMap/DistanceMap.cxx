@@ -46,9 +46,6 @@ void Run(mmrep::cli::ModuleContext& ctx)
   mmrep::cli::AtomicOutput out(args.String("outputMap"));
   ctx.progress.Start("Distance map");
 
-  auto surface = IsVolumePath(input) ? LabelBoundary(input, args.Int("labelValue")) : mmrep::ReadSurface(input);
-  ctx.progress.Report(0.1);
-
   mmrep::SurfaceDistanceMapOptions o;
   o.spacing = args.Double("spacing");
   o.margin = args.Double("margin");
@@ -60,6 +57,8 @@ void Run(mmrep::cli::ModuleContext& ctx)
       throw mmrep::cli::ModuleError("--region needs six numbers xmin,xmax,ymin,ymax,zmin,zmax with min <= max");
     std::copy(r.begin(), r.end(), o.region.begin());
   }
+  auto surface = IsVolumePath(input) ? LabelBoundary(input, args.Int("labelValue")) : mmrep::ReadSurface(input);
+  ctx.progress.Report(0.1);
   auto map = mmrep::ComputeSurfaceDistanceMap(surface, o, [&](double f) { ctx.progress.ReportRange(0.1, 0.9, f); });
   mmrep::WriteImage(map.GetPointer(), out.TempPath());
   out.Commit();

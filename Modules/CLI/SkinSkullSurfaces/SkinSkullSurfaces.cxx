@@ -40,6 +40,13 @@ void Run(mmrep::cli::ModuleContext& ctx)
     outputs.push_back(std::make_unique<mmrep::cli::AtomicOutput>(path));
     return *outputs.back();
   };
+  for (const char* name : {"outputSkin", "outputSkull"})
+  {
+    const auto ext = mmrep::cli::FileExtension(args.String(name));
+    if (ext != ".vtp" && ext != ".vtk" && ext != ".stl" && ext != ".ply" && ext != ".obj")
+      throw mmrep::cli::ModuleError(args.String(name) + ": unknown surface format '" + ext +
+                                    "' (use .vtp, .vtk, .stl, .ply or .obj)");
+  }
   auto& skinOut = out(args.String("outputSkin"));
   auto& skullOut = out(args.String("outputSkull"));
   mmrep::cli::AtomicOutput* skinMaskOut = args.Given("skinMask") ? &out(args.String("skinMask")) : nullptr;
@@ -64,6 +71,9 @@ void Run(mmrep::cli::ModuleContext& ctx)
   const auto head = mmrep::SegmentHead(ct, seg, [&](double f) { ctx.progress.ReportRange(0.1, 0.5, f); });
 
   mmrep::SurfaceExtractionOptions surf;
+  // The masks are single components without cavities, so each surface is already one piece (the
+  // image-stage tests check it on both sample CTs): skip the connectivity pass.
+  surf.largestPieceOnly = false;
   surf.smoothingIterations = static_cast<unsigned>(args.Int("smoothingIterations"));
   surf.targetVertexCount = static_cast<std::size_t>(args.Int("skinVertexCount"));
   auto skin = mmrep::ExtractSurface(mmrep::MaskedIntensities(ct, head.skin, thresholds.skin), thresholds.skin, surf);
