@@ -3,6 +3,8 @@
 #include "itkSaitoToriwakiDistanceMapImageFilter.h"
 #include "mmrepPointTriangleDistance.h"
 
+#include <Eigen/Geometry>
+
 #include <itkMultiThreaderBase.h>
 #include <vtkCellArray.h>
 #include <vtkIdList.h>
@@ -12,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <vector>
 
@@ -23,9 +26,66 @@ namespace
 struct Triangle
 {
   Eigen::Vector3d a, b, c;
+  vtkIdType ids[3];
 };
+// Pseudo-normals of a triangle's features (signed mode): vertices A, B, C, edges AB, AC, BC, face.
+using FeatureNormals = std::array<Eigen::Vector3d, 7>;
 
-std::vector<Triangle> Triangles(vtkPolyData* surface)
+// Angle-weighted vertex normals, edge normals (sum of the two faces) and face normals: with them,
+// the sign of (p - closest) · normal of the closest feature tells inside from outside exactly on
+// a closed manifold (Bærentzen & Aanæs, IEEE TVCG 11(3), 2005).
+std::vector<FeatureNormals> ComputePseudoNormals(const std::vector<Triangle>& triangles, vtkIdType pointCount)
+{
+  std::vector<FeatureNormals> normals(triangles.size());
+  std::vector<Eigen::Vector3d> vertex(pointCount, Eigen::Vector3d::Zero());
+  std::map<std::pair<vtkIdType, vtkIdType>, std::pair<Eigen::Vector3d, int>> edge;
+  auto key = [](vtkIdType u, vtkIdType v) { return std::make_pair(std::min(u, v), std::max(u, v)); };
+  double volume6 = 0;
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+  {
+    const auto& t = triangles[i];
+    const Eigen::Vector3d* p[3] = {&t.a, &t.b, &t.c};
+    Eigen::Vector3d n = (t.b - t.a).cross(t.c - t.a);
+    volume6 += t.a.dot((t.b).cross(t.c));
+    const double len = n.norm();
+    n = len > 0 ? Eigen::Vector3d(n / len) : Eigen::Vector3d::Zero();
+    normals[i][6] = n;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector3d e1 = *p[(k + 1) % 3] - *p[k], e2 = *p[(k + 2) % 3] - *p[k];
+      const double l1 = e1.norm(), l2 = e2.norm();
+      const double angle = l1 > 0 && l2 > 0 ? std::acos(std::max(-1.0, std::min(1.0, e1.dot(e2) / (l1 * l2)))) : 0;
+      vertex[t.ids[k]] += angle * n;
+    }
+    for (auto [u, v] : {std::make_pair(0, 1), std::make_pair(0, 2), std::make_pair(1, 2)})
+    {
+      // Eigen vectors are not zero-initialised: start each new edge's sum explicitly.
+      auto& e = edge.try_emplace(key(t.ids[u], t.ids[v]), Eigen::Vector3d::Zero(), 0).first->second;
+      e.first += n;
+      e.second += 1;
+    }
+  }
+  std::size_t open = 0;
+  for (const auto& [k, e] : edge)
+    open += e.second != 2;
+  if (open > 0)
+    throw std::runtime_error("distance map: a signed distance needs a closed surface, this one has " +
+                             std::to_string(open) + " open or non-manifold edges");
+  const double orientation = volume6 < 0 ? -1.0 : 1.0; // normals must point outward
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+  {
+    const auto& t = triangles[i];
+    for (int k = 0; k < 3; ++k)
+      normals[i][k] = orientation * vertex[t.ids[k]];
+    normals[i][3] = orientation * edge[key(t.ids[0], t.ids[1])].first;
+    normals[i][4] = orientation * edge[key(t.ids[0], t.ids[2])].first;
+    normals[i][5] = orientation * edge[key(t.ids[1], t.ids[2])].first;
+    normals[i][6] *= orientation;
+  }
+  return normals;
+}
+
+std::vector<Triangle> Triangles(vtkPolyData* surface, std::vector<FeatureNormals>* normals)
 {
   vtkNew<vtkTriangleFilter> tri; // polygons and strips become triangles; lines and vertices dropped
   tri->SetInputData(surface);
@@ -43,11 +103,15 @@ std::vector<Triangle> Triangles(vtkPolyData* surface)
     if (ids->GetNumberOfIds() != 3)
       continue;
     Triangle tr;
-    t->GetPoint(ids->GetId(0), tr.a.data());
-    t->GetPoint(ids->GetId(1), tr.b.data());
-    t->GetPoint(ids->GetId(2), tr.c.data());
+    for (int k = 0; k < 3; ++k)
+      tr.ids[k] = ids->GetId(k);
+    t->GetPoint(tr.ids[0], tr.a.data());
+    t->GetPoint(tr.ids[1], tr.b.data());
+    t->GetPoint(tr.ids[2], tr.c.data());
     out.push_back(tr);
   }
+  if (normals)
+    *normals = ComputePseudoNormals(out, t->GetNumberOfPoints());
   return out;
 }
 } // namespace
@@ -63,7 +127,8 @@ FloatImage::Pointer ComputeSurfaceDistanceMap(vtkPolyData* surface, const Surfac
     throw std::runtime_error("distance map: spacing must be > 0, margin >= 0 and the exact band >= 1 voxel");
   if (surface == nullptr || surface->GetNumberOfPolys() + surface->GetNumberOfStrips() == 0)
     throw std::runtime_error("distance map: the surface has no triangles");
-  const auto triangles = Triangles(surface);
+  std::vector<FeatureNormals> normals;
+  const auto triangles = Triangles(surface, o.signedDistance ? &normals : nullptr);
   if (triangles.empty())
     throw std::runtime_error("distance map: the surface has no triangles");
 
@@ -97,6 +162,7 @@ FloatImage::Pointer ComputeSurfaceDistanceMap(vtkPolyData* surface, const Surfac
   const std::size_t nx = size[0], ny = size[1], nz = size[2], n = nx * ny * nz;
   const double h = o.spacing, band = o.exactBand * h;
   std::vector<double> exact(n, std::numeric_limits<double>::infinity());
+  std::vector<signed char> sign(o.signedDistance ? n : 0, 1); // -1 inside
 
   // Exact band: each triangle visits the voxels of its bounding box grown by the band. Work is
   // split into z-slabs owned by one thread each (no write conflicts); the minimum does not depend
@@ -144,10 +210,16 @@ FloatImage::Pointer ComputeSurfaceDistanceMap(vtkPolyData* surface, const Surfac
             for (std::size_t i = i0; i < i1; ++i)
             {
               const Eigen::Vector3d p = o3 + Eigen::Vector3d(i * h, j * h, k * h);
-              const double d2 = SquaredDistanceToTriangle(p, tr.a, tr.b, tr.c);
-              double& e = exact[i + nx * (j + ny * k)];
-              if (d2 < e && d2 <= band2)
-                e = d2;
+              TriangleFeature feature;
+              const Eigen::Vector3d closest = ClosestPointOnTriangle(p, tr.a, tr.b, tr.c, &feature);
+              const double d2 = (closest - p).squaredNorm();
+              const std::size_t v = i + nx * (j + ny * k);
+              if (d2 < exact[v] && d2 <= band2)
+              {
+                exact[v] = d2;
+                if (!sign.empty())
+                  sign[v] = (p - closest).dot(normals[t][static_cast<int>(feature)]) < 0 ? -1 : 1;
+              }
             }
       }
     },
@@ -172,7 +244,7 @@ FloatImage::Pointer ComputeSurfaceDistanceMap(vtkPolyData* surface, const Surfac
   if (bandVoxels == n)
   {
     for (std::size_t v = 0; v < n; ++v)
-      out[v] = static_cast<float>(std::sqrt(exact[v]));
+      out[v] = static_cast<float>((sign.empty() ? 1 : sign[v]) * std::sqrt(exact[v]));
     report(1.0);
     return map;
   }
@@ -189,7 +261,7 @@ FloatImage::Pointer ComputeSurfaceDistanceMap(vtkPolyData* surface, const Surfac
       {
         if (std::isfinite(exact[v]))
         {
-          out[v] = static_cast<float>(std::sqrt(exact[v]));
+          out[v] = static_cast<float>((sign.empty() ? 1 : sign[v]) * std::sqrt(exact[v]));
           continue;
         }
         const auto& d = vec[v];
@@ -198,7 +270,10 @@ FloatImage::Pointer ComputeSurfaceDistanceMap(vtkPolyData* surface, const Surfac
         const long qj = static_cast<long>(j) + std::lround(d[1] / h);
         const long qk = static_cast<long>(k) + std::lround(d[2] / h);
         const std::size_t q = static_cast<std::size_t>(qi) + nx * (static_cast<std::size_t>(qj) + ny * static_cast<std::size_t>(qk));
-        out[v] = static_cast<float>(std::sqrt(static_cast<double>(d.GetSquaredNorm())) + std::sqrt(exact[q]));
+        // The straight path to q does not cross the surface (q is the nearest band voxel), so p
+        // lies on q's side.
+        out[v] = static_cast<float>((sign.empty() ? 1 : sign[q]) *
+                                    (std::sqrt(static_cast<double>(d.GetSquaredNorm())) + std::sqrt(exact[q])));
       }
   report(1.0);
   return map;

@@ -23,6 +23,12 @@ struct SurfaceDistanceMapOptions
   double spacing = 1.5;  // mm, isotropic voxel size (the paper: 1.5 mm overall, 0.5 mm for the lips)
   double margin = 10.0;  // mm added around the region on every side
   double exactBand = 2.0; // voxels: half-width of the band of exact distances
+  // Negative inside a closed surface (sign from angle-weighted pseudo-normals, Bærentzen & Aanæs
+  // 2005; far voxels take the sign of their nearest band voxel). A signed map interpolates
+  // linearly through the surface, where an unsigned one rounds off its V. Needs a closed,
+  // consistently oriented surface (each edge in two triangles); the orientation is taken from the
+  // sign of the enclosed volume.
+  bool signedDistance = false;
   // Region covered, in LPS mm: {xmin, xmax, ymin, ymax, zmin, zmax}. Empty (min > max): the
   // surface's bounding box.
   std::array<double, 6> region{1, 0, 1, 0, 1, 0};

@@ -1,6 +1,7 @@
 // Thresholds, masks and surfaces of the image stage, on the bundled CTs and on constructed volumes.
 #include "mmrepCTThresholds.h"
 #include "mmrepHeadSegmentation.h"
+#include "mmrepSurfaceDistanceMap.h"
 #include "mmrepSurfaceExtraction.h"
 
 #include <gtest/gtest.h>
@@ -308,4 +309,42 @@ TEST(ImageStageOpening, EqualsBruteForceBallOpening)
     EXPECT_GT(kept, 0u) << "radius " << r;
     EXPECT_EQ(differences, 0u) << "radius " << r;
   }
+}
+
+TEST(ImageStageSignedMap, RealSkinSignAgreesWithTheHeadMask)
+{
+  // The skin of headsq, signed distance at its own voxel grid spacing: voxel centres well inside
+  // the filled head mask (more than one voxel from the surface) are negative, well outside positive.
+  auto ct = Sample("headsq.nrrd");
+  const auto t = mmrep::ChooseThresholds(ct, mmrep::ThresholdMode::Automatic, NaN, NaN);
+  mmrep::HeadSegmentationOptions o;
+  o.skinThreshold = t.skin;
+  o.boneThreshold = t.bone;
+  const auto head = mmrep::SegmentHead(ct, o);
+  auto skin = mmrep::ExtractSurface(mmrep::MaskedIntensities(ct, head.skin, t.skin), t.skin);
+  mmrep::SurfaceDistanceMapOptions m;
+  m.spacing = 2.0;
+  m.margin = 4;
+  m.signedDistance = true;
+  auto map = mmrep::ComputeSurfaceDistanceMap(skin, m);
+  std::size_t checked = 0, wrong = 0;
+  const auto size = head.skin->GetBufferedRegion().GetSize();
+  for (unsigned k = 0; k < size[2]; k += 2)
+    for (unsigned j = 0; j < size[1]; j += 2)
+      for (unsigned i = 0; i < size[0]; i += 2)
+      {
+        mmrep::MaskImage::IndexType idx{{i, j, k}};
+        mmrep::MaskImage::PointType p;
+        head.skin->TransformIndexToPhysicalPoint(idx, p);
+        mmrep::FloatImage::IndexType q;
+        if (!map->TransformPhysicalPointToIndex(p, q))
+          continue;
+        const float d = map->GetPixel(q);
+        if (std::abs(d) < 4.0f) // within two map voxels of the surface: the mask's staircase differs
+          continue;
+        ++checked;
+        wrong += (head.skin->GetPixel(idx) != 0) != (d < 0);
+      }
+  EXPECT_GT(checked, 5000u);
+  EXPECT_EQ(wrong, 0u);
 }

@@ -50,6 +50,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
   o.spacing = args.Double("spacing");
   o.margin = args.Double("margin");
   o.exactBand = args.Double("exactBand");
+  o.signedDistance = args.Bool("signed");
   if (args.Given("region"))
   {
     const auto r = args.Doubles("region");
