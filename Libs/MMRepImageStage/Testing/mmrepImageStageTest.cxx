@@ -4,11 +4,11 @@
 #include "mmrepSurfaceDistanceMap.h"
 #include "mmrepSurfaceExtraction.h"
 
+#include "mmrepSurfaceChecks.h"
+
 #include <gtest/gtest.h>
 #include <itkConnectedComponentImageFilter.h>
-#include <vtkFeatureEdges.h>
 #include <vtkNew.h>
-#include <vtkPolyDataConnectivityFilter.h>
 
 #include <cmath>
 #include <limits>
@@ -49,26 +49,7 @@ unsigned long Components(const mmrep::MaskImage* mask, unsigned char value)
   return cc->GetObjectCount();
 }
 
-int SurfacePieces(vtkPolyData* s)
-{
-  vtkNew<vtkPolyDataConnectivityFilter> c;
-  c->SetInputData(s);
-  c->SetExtractionModeToAllRegions();
-  c->Update();
-  return c->GetNumberOfExtractedRegions();
-}
 
-vtkIdType OpenEdges(vtkPolyData* s)
-{
-  vtkNew<vtkFeatureEdges> e;
-  e->SetInputData(s);
-  e->BoundaryEdgesOn();
-  e->NonManifoldEdgesOn();
-  e->FeatureEdgesOff();
-  e->ManifoldEdgesOff();
-  e->Update();
-  return e->GetOutput()->GetNumberOfCells();
-}
 } // namespace
 
 TEST(ImageStageThresholds, HistogramSplitsAirTissueBoneOnBundledCTs)
@@ -192,10 +173,10 @@ TEST_P(ImageStageHead, OneHeadOneSkullClosedSurfaces)
   s.largestPieceOnly = false;
   auto skin = mmrep::ExtractSurface(mmrep::MaskedIntensities(ct, head.skin, t.skin), t.skin, s);
   auto skull = mmrep::ExtractSurface(mmrep::MaskedIntensities(ct, head.bone, t.bone), t.bone, s);
-  EXPECT_EQ(SurfacePieces(skin), 1);
-  EXPECT_EQ(SurfacePieces(skull), 1);
-  EXPECT_EQ(OpenEdges(skin), 0);
-  EXPECT_EQ(OpenEdges(skull), 0);
+  EXPECT_EQ(mmrep::testing::SurfacePieces(skin), 1);
+  EXPECT_EQ(mmrep::testing::SurfacePieces(skull), 1);
+  EXPECT_EQ(mmrep::testing::OpenOrNonManifoldEdges(skin), 0);
+  EXPECT_EQ(mmrep::testing::OpenOrNonManifoldEdges(skull), 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(BundledCTs, ImageStageHead, ::testing::Values("cthead.nrrd", "headsq.nrrd"),

@@ -3,12 +3,12 @@
 #include "mmrepModuleRunner.h"
 #include "mmrepSurfaceIO.h"
 
+#include "mmrepSurfaceChecks.h"
+
 #include <gtest/gtest.h>
 #include <itkImage.h>
 #include <itkImageFileWriter.h>
-#include <vtkFeatureEdges.h>
 #include <vtkNew.h>
-#include <vtkPolyDataConnectivityFilter.h>
 
 using mmrep::testing::ReadReturnParameters;
 using mmrep::testing::RunModuleExecutable;
@@ -16,27 +16,6 @@ using mmrep::testing::ScratchDirectory;
 
 namespace
 {
-int Pieces(vtkPolyData* s)
-{
-  vtkNew<vtkPolyDataConnectivityFilter> c;
-  c->SetInputData(s);
-  c->SetExtractionModeToAllRegions();
-  c->Update();
-  return c->GetNumberOfExtractedRegions();
-}
-
-vtkIdType BoundaryOrNonManifoldEdges(vtkPolyData* s)
-{
-  vtkNew<vtkFeatureEdges> e;
-  e->SetInputData(s);
-  e->BoundaryEdgesOn();
-  e->NonManifoldEdgesOn();
-  e->FeatureEdgesOff();
-  e->ManifoldEdgesOff();
-  e->Update();
-  return e->GetOutput()->GetNumberOfCells();
-}
-
 // Pictures are kept in the build tree (build/Testing/Pictures) for people to look at.
 std::string PictureDir()
 {
@@ -65,10 +44,10 @@ TEST_P(SkinSkullSurfacesOnCT, OneClosedSkinOneClosedSkullAndAPicture)
   EXPECT_NE(run.out.find("<filter-end>"), std::string::npos);
   auto skin = mmrep::ReadSurface(dir / "skin.vtp");
   auto skull = mmrep::ReadSurface(dir / "skull.stl");
-  EXPECT_EQ(Pieces(skin), 1);
-  EXPECT_EQ(Pieces(skull), 1);
-  EXPECT_EQ(BoundaryOrNonManifoldEdges(skin), 0);
-  EXPECT_EQ(BoundaryOrNonManifoldEdges(skull), 0);
+  EXPECT_EQ(mmrep::testing::SurfacePieces(skin), 1);
+  EXPECT_EQ(mmrep::testing::SurfacePieces(skull), 1);
+  EXPECT_EQ(mmrep::testing::OpenOrNonManifoldEdges(skin), 0);
+  EXPECT_EQ(mmrep::testing::OpenOrNonManifoldEdges(skull), 0);
   const auto values = ReadReturnParameters(dir / "out.txt");
   EXPECT_EQ(values.at("thresholdSource"), "histogram");
   EXPECT_EQ(std::stoll(values.at("skinVertices")), skin->GetNumberOfPoints());
