@@ -11,7 +11,7 @@ mkdir -p "$out"
 
 # Pictures need an X display; Debian's VTK renders through X11.
 render=()
-if [ -z "${DISPLAY:-}" ]; then render=(xvfb-run -a); fi
+if [ -z "${DISPLAY:-}" ]; then render=(xvfb-run -a -s "-screen 0 2560x1600x24"); fi
 
 step() { echo; echo "== $*"; }
 

@@ -13,6 +13,7 @@
 #include <itkMetaImageIOFactory.h>
 #include <itkNiftiImageIOFactory.h>
 #include <itkNrrdImageIOFactory.h>
+#include <itkPixelTraits.h>
 #include <itksys/SystemTools.hxx>
 
 #include <cmath>
@@ -72,7 +73,7 @@ std::string FirstLine(const std::string& text)
 }
 
 // Probes the header to give precise errors (format, dimension, components) before reading.
-itk::ImageIOBase::Pointer ProbeFile(const std::string& path)
+itk::ImageIOBase::Pointer ProbeFile(const std::string& path, unsigned int components)
 {
   if (!itksys::SystemTools::FileExists(path, true))
   {
@@ -98,10 +99,11 @@ itk::ImageIOBase::Pointer ProbeFile(const std::string& path)
   {
     Fail(path, "expected a 3D volume, found " + std::to_string(io->GetNumberOfDimensions()) + "D");
   }
-  if (io->GetNumberOfComponents() != 1)
+  if (io->GetNumberOfComponents() != components)
   {
-    Fail(path, "expected a scalar volume, found " + std::to_string(io->GetNumberOfComponents()) +
-                 " components per voxel");
+    Fail(path, (components == 1 ? std::string("expected a scalar volume")
+                                : "expected " + std::to_string(components) + " components per voxel") +
+                 ", found " + std::to_string(io->GetNumberOfComponents()) + " components per voxel");
   }
   return io;
 }
@@ -110,7 +112,7 @@ template <typename TImage>
 typename TImage::Pointer ReadFile(const std::string& path)
 {
   EnsureImageIOFactories();
-  itk::ImageIOBase::Pointer io = ProbeFile(path);
+  itk::ImageIOBase::Pointer io = ProbeFile(path, itk::PixelTraits<typename TImage::PixelType>::Dimension);
   auto reader = itk::ImageFileReader<TImage>::New();
   reader->SetFileName(path);
   reader->SetImageIO(io);
@@ -293,6 +295,16 @@ void WriteImage(const FloatImage* image, const std::string& path)
 void WriteImage(const MaskImage* image, const std::string& path)
 {
   WriteFile(image, path);
+}
+
+DisplacementField::Pointer ReadDisplacementField(const std::string& path)
+{
+  return ReadFile<DisplacementField>(path);
+}
+
+void WriteDisplacementField(const DisplacementField* field, const std::string& path)
+{
+  WriteFile(field, path);
 }
 
 void WriteDicomSeries(const CTImage* input, const std::string& directory)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <itkImage.h>
+#include <itkVector.h>
 
 #include <string>
 
@@ -12,6 +13,8 @@ namespace mmrep
 using CTImage = itk::Image<short, 3>;   // CT volumes as stored by scanners (HU or scanner units)
 using FloatImage = itk::Image<float, 3>; // distance maps and other scalar fields
 using MaskImage = itk::Image<unsigned char, 3>; // binary masks: 1 inside, 0 outside
+// Displacement fields (mm, LPS): the transform's direction is documented where a field is made.
+using DisplacementField = itk::Image<itk::Vector<float, 3>, 3>;
 
 // Reads a file or a DICOM directory. Throws std::runtime_error naming the path on any problem
 // (missing, truncated, not 3D, unknown format).
@@ -21,6 +24,9 @@ MaskImage::Pointer ReadMaskImage(const std::string& path); // values cast to uns
 void WriteImage(const CTImage* image, const std::string& path);
 void WriteImage(const FloatImage* image, const std::string& path);
 void WriteImage(const MaskImage* image, const std::string& path);
+// Vector images with 3 components (NRRD, MetaImage, NIfTI), readable by ITK and by Slicer.
+DisplacementField::Pointer ReadDisplacementField(const std::string& path);
+void WriteDisplacementField(const DisplacementField* field, const std::string& path);
 // Writes a DICOM series (one file per slice, CT modality) into an existing directory.
 void WriteDicomSeries(const CTImage* image, const std::string& directory);
 

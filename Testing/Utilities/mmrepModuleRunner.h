@@ -59,7 +59,7 @@ inline ModuleRun RunModuleExecutable(const std::string& module, const std::vecto
   std::string cmd;
   const char* display = std::getenv("DISPLAY");
   if (needsDisplay && (display == nullptr || *display == '\0'))
-    cmd = "xvfb-run -a ";
+    cmd = "xvfb-run -a -s \"-screen 0 2560x1600x24\" "; // room for several 600-px views
   cmd += Quote(std::string(MMREP_BINARY_DIR) + "/bin/" + module);
   for (const auto& a : args)
     cmd += " " + Quote(a);

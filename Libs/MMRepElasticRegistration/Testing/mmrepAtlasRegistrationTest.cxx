@@ -1,0 +1,274 @@
+// Registration of a synthetic symmetric atlas onto a subject warped by a known map: accuracy,
+// non-folding, exact symmetry, the displacement field, and the local refinement.
+#include "mmrepAtlasRegistration.h"
+#include "mmrepElasticTestData.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/LU>
+#include <itkVectorLinearInterpolateImageFunction.h>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <random>
+
+using namespace mmrep;
+using namespace mmrep::elastictest;
+
+namespace
+{
+struct Shared
+{
+  SyntheticAtlas atlas;
+  Truth truth;
+  SubjectData subject;
+  AtlasRegistrationResult registration;
+  LocalRefinementResult refinement;
+};
+
+Shared& Data()
+{
+  static std::unique_ptr<Shared> d;
+  if (!d)
+  {
+    d = std::make_unique<Shared>();
+    d->atlas = MakeAtlas();
+    d->subject.skin = MakeSurface(SkinRadii(), d->truth);
+    d->subject.skull = MakeSurface(SkullRadii(), d->truth);
+    d->subject.controlPoints = SubjectControlPoints(d->atlas.mesh, d->truth);
+    d->subject.plane = d->truth.SubjectPlane();
+    AtlasRegistrationOptions o;
+    d->registration = RegisterAtlas(d->atlas.mesh, d->atlas.plane, d->subject, o);
+    LocalRefinementOptions q;
+    q.symmetric = true;
+    q.plane = d->subject.plane;
+    d->refinement = RefineLocally(d->registration.mesh, d->subject.skin, q);
+    std::cout << d->registration.report.ToJson() << std::endl;
+    std::cout << "refinement: lips mean " << d->refinement.before.lips.mean << " -> " << d->refinement.after.lips.mean
+              << " max " << d->refinement.before.lips.max << " -> " << d->refinement.after.lips.max << " ("
+              << d->refinement.after.seconds << " s, steps";
+    for (auto s : d->refinement.after.stepsPerLevel)
+      std::cout << " " << s;
+    std::cout << ")" << std::endl;
+  }
+  return *d;
+}
+
+double RelativeScale(const FEMesh& m)
+{
+  double r = 0;
+  for (const auto& n : m.nodes)
+    r = std::max(r, n.norm());
+  return r;
+}
+} // namespace
+
+TEST(ElasticRegistration, SyntheticSubjectIsMatched)
+{
+  const auto& d = Data();
+  const auto& r = d.registration.report;
+  const auto& sim = r.stages.front();
+  const auto& last = r.Last();
+  EXPECT_LT(last.skin.mean, 0.3);
+  EXPECT_LT(last.skull.mean, 0.3);
+  EXPECT_LT(last.controlMean, 0.5);
+  EXPECT_LT(last.skin.mean, 0.2 * sim.skin.mean); // the elastic stage does the work
+  // Node error against the known truth T(a) (correspondence, not only surface distance).
+  double truthMean = 0, truthMax = 0, simTruthMean = 0;
+  const auto& skin = d.atlas.mesh.nodeSets.at("skin");
+  for (auto id : skin)
+  {
+    const Eigen::Vector3d truth = d.truth(d.atlas.mesh.nodes[id]);
+    const double e = (d.registration.mesh.nodes[id] - truth).norm();
+    truthMean += e / skin.size();
+    truthMax = std::max(truthMax, e);
+    simTruthMean += (d.registration.transform.PreApply(d.atlas.mesh.nodes[id]) - truth).norm() / skin.size();
+  }
+  std::cout << "skin node error vs truth: mean " << truthMean << " max " << truthMax
+            << " mm (similarity only: " << simTruthMean << " mm)" << std::endl;
+  // Surface distances say nothing about sliding along the surface: the distance to the true
+  // corresponding point must drop too (the control points fix the correspondence locally).
+  EXPECT_LT(truthMean, simTruthMean);
+  // The result is what the transform gives (tracked points = replay).
+  for (std::size_t i = 0; i < d.atlas.mesh.nodes.size(); i += 7)
+    ASSERT_EQ(d.registration.mesh.nodes[i], d.registration.transform.Apply(d.atlas.mesh.nodes[i]));
+}
+
+TEST(ElasticRegistration, JacobianIsPositiveEverywhereInTheGrid)
+{
+  const auto& t = Data().registration.transform;
+  ASSERT_FALSE(t.levels.empty());
+  // 40³ samples over the grid box (frame), mapped back to atlas space through the similarity.
+  const auto& level = t.levels.back();
+  const Eigen::Vector3d lo = level.boxMin, extent = level.h * level.cells;
+  const Eigen::Matrix3d preInverse = t.preLinear.inverse();
+  double minDet = 1e9;
+  const int n = 40;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k)
+      {
+        const Eigen::Vector3d f = lo + Eigen::Vector3d((i + 0.5) / n * extent.x(), (j + 0.5) / n * extent.y(),
+                                                       (k + 0.5) / n * extent.z());
+        const Eigen::Vector3d x = preInverse * (t.ToWorld(f) - t.preTranslation);
+        minDet = std::min(minDet, t.Jacobian(x).determinant() / t.preLinear.determinant());
+      }
+  std::cout << "min det J of the elastic part over the grid: " << minDet << std::endl;
+  EXPECT_GT(minDet, 0.0);
+}
+
+TEST(ElasticRegistration, OutputIsSymmetricAboutTheSubjectPlane)
+{
+  const auto& d = Data();
+  const double scale = RelativeScale(d.registration.mesh);
+  double worst = 0;
+  for (const auto& [a, b] : d.atlas.mirrorPairs)
+  {
+    const Eigen::Vector3d pa = d.registration.mesh.nodes[a], pb = d.registration.mesh.nodes[b];
+    worst = std::max(worst, (d.subject.plane.Mirror(pa) - pb).norm());
+  }
+  for (auto id : d.atlas.mesh.nodeSets.at("midsagittal"))
+    worst = std::max(worst, std::abs(d.subject.plane.SignedDistance(d.registration.mesh.nodes[id])));
+  std::cout << "symmetry error " << worst << " mm (relative " << worst / scale << ")" << std::endl;
+  EXPECT_LT(worst / scale, 1e-9);
+  // Same after the symmetric refinement.
+  worst = 0;
+  for (const auto& [a, b] : d.atlas.mirrorPairs)
+    worst = std::max(worst, (d.subject.plane.Mirror(d.refinement.mesh.nodes[a]) - d.refinement.mesh.nodes[b]).norm());
+  EXPECT_LT(worst / scale, 1e-9);
+}
+
+namespace
+{
+// Max |x + u(x) − R(x)| at random points of a 12 mm cube in front of the lips (where the map bends
+// most), u trilinearly interpolated (ITK) from the field sampled with `spacing`; also the largest
+// error at the grid points themselves (float storage only) and the largest |u|.
+struct FieldCheck
+{
+  double between = 0, atNodes = 0, largest = 0;
+};
+FieldCheck CheckField(const ElasticTransform& t, double spacing)
+{
+  const Eigen::Vector3d origin(-12, -100, -42);
+  auto grid = itk::Image<float, 3>::New();
+  itk::Image<float, 3>::RegionType region;
+  const auto n = static_cast<itk::SizeValueType>(std::lround(12 / spacing)) + 1;
+  region.SetSize({{n, n, n}});
+  grid->SetRegions(region);
+  grid->SetOrigin(itk::Image<float, 3>::PointType(origin.data()));
+  grid->SetSpacing(spacing);
+  const auto field = t.ToDisplacementField(grid);
+  auto interp = itk::VectorLinearInterpolateImageFunction<DisplacementField, double>::New();
+  interp->SetInputImage(field);
+  FieldCheck c;
+  auto error = [&](const Eigen::Vector3d& x) {
+    DisplacementField::PointType p;
+    for (int a = 0; a < 3; ++a)
+      p[a] = x[a];
+    const auto v = interp->Evaluate(p);
+    const Eigen::Vector3d u(v[0], v[1], v[2]);
+    c.largest = std::max(c.largest, u.norm());
+    return (x + u - t.Apply(x)).norm();
+  };
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> unit(0.01, 11.99);
+  for (int k = 0; k < 1000; ++k)
+    c.between = std::max(c.between, error(origin + Eigen::Vector3d(unit(rng), unit(rng), unit(rng))));
+  for (int k = 0; k < 200; ++k)
+  {
+    std::uniform_int_distribution<int> idx(0, static_cast<int>(n) - 1);
+    c.atNodes = std::max(c.atNodes, error(origin + spacing * Eigen::Vector3d(idx(rng), idx(rng), idx(rng))));
+  }
+  return c;
+}
+} // namespace
+
+TEST(ElasticRegistration, DisplacementFieldReproducesTheTransform)
+{
+  const auto& t = Data().registration.transform;
+  const auto coarse = CheckField(t, 1.0), fine = CheckField(t, 0.5);
+  std::cout << "displacement field vs transform: 1 mm grid " << coarse.between << " mm, 0.5 mm grid " << fine.between
+            << " mm, at grid points " << fine.atNodes << " mm (|u| up to " << fine.largest << " mm)" << std::endl;
+  EXPECT_GT(fine.largest, 1.0);
+  EXPECT_LT(fine.atNodes, 1e-4);               // float storage of u
+  EXPECT_LT(fine.between, 0.1);                // interpolation accuracy at 0.5 mm …
+  EXPECT_LT(fine.between, 0.5 * coarse.between); // … and it converges (trilinear: O(spacing²))
+}
+
+TEST(ElasticRefinement, LipsErrorDropsAndOutsideIsUntouched)
+{
+  const auto& d = Data();
+  const auto& q = d.refinement;
+  EXPECT_LT(q.after.lips.mean, q.before.lips.mean);
+  EXPECT_LE(q.after.lips.mean, 0.05);
+  EXPECT_LE(q.after.lips.max, 0.15);
+  EXPECT_LE(q.after.skin.mean, q.before.skin.mean);
+  std::size_t outside = 0, inside = 0;
+  for (std::size_t i = 0; i < d.registration.mesh.nodes.size(); ++i)
+  {
+    const Eigen::Vector3d f = q.transform.ToFrame(d.registration.mesh.nodes[i]);
+    const bool in = (f.array() > q.boxMin.array()).all() && (f.array() < q.boxMax.array()).all();
+    if (!in)
+    {
+      ++outside;
+      ASSERT_EQ(q.mesh.nodes[i], d.registration.mesh.nodes[i]) << i; // bit for bit
+    }
+    else
+      inside += q.mesh.nodes[i] != d.registration.mesh.nodes[i] ? 1 : 0;
+  }
+  EXPECT_GT(outside, d.registration.mesh.nodes.size() / 2);
+  EXPECT_GT(inside, 20u);
+  // Q does not fold: det J > 0 sampled over its box.
+  double minDet = 1e9;
+  const int n = 30;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k)
+      {
+        const Eigen::Vector3d f =
+          q.boxMin + (q.boxMax - q.boxMin).cwiseProduct(Eigen::Vector3d((i + 0.5) / n, (j + 0.5) / n, (k + 0.5) / n));
+        minDet = std::min(minDet, q.transform.Jacobian(q.transform.ToWorld(f)).determinant());
+      }
+  EXPECT_GT(minDet, 0.0);
+}
+
+TEST(ElasticRegistration, IsDeterministic)
+{
+  const auto& d = Data();
+  const auto again = RegisterAtlas(d.atlas.mesh, d.atlas.plane, d.subject, {});
+  ASSERT_EQ(again.transform.StepsPerLevel(), d.registration.transform.StepsPerLevel());
+  for (std::size_t i = 0; i < d.atlas.mesh.nodes.size(); ++i)
+    ASSERT_EQ(again.mesh.nodes[i], d.registration.mesh.nodes[i]) << i; // same bytes
+}
+
+TEST(ElasticRegistration, BadInputIsRejectedWithAClearMessage)
+{
+  const auto& d = Data();
+  SubjectData s = d.subject;
+  s.controlPoints[2].name = "Nose";
+  try
+  {
+    RegisterAtlas(d.atlas.mesh, d.atlas.plane, s, {});
+    FAIL() << "mismatched names accepted";
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("LeftLipCorner"), std::string::npos) << e.what();
+  }
+  s = d.subject;
+  s.skin = vtkSmartPointer<vtkPolyData>::New();
+  EXPECT_THROW(RegisterAtlas(d.atlas.mesh, d.atlas.plane, s, {}), std::runtime_error);
+  s = d.subject;
+  for (auto& c : s.controlPoints)
+    c.position += Eigen::Vector3d(0, 0, 1000); // the surfaces stay where they were
+  try
+  {
+    RegisterAtlas(d.atlas.mesh, d.atlas.plane, s, {});
+    FAIL() << "non-overlapping input accepted";
+  }
+  catch (const std::runtime_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("do not overlap"), std::string::npos) << e.what();
+  }
+}

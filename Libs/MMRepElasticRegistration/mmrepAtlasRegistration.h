@@ -1,0 +1,135 @@
+// MMRep atlas-to-subject registration (paper §3.1–3.3): control-point similarity, symmetric
+// multi-level elastic registration R of the atlas onto the subject's skin and skull, and the
+// local lips refinement Q. See README.md in this folder for the design.
+//
+//   auto r = mmrep::RegisterAtlas(atlas, atlasPlane, subject, options);   // R
+//   auto q = mmrep::RefineLocally(r.mesh, subject.skin, refineOptions);    // Q, on R's output
+//   q.mesh: Q∘R of the atlas; every node moves (muscle nodes are mesh nodes), landmarks too.
+#pragma once
+
+#include "mmrepElasticOptimizer.h"
+#include "mmrepElasticTransform.h"
+#include "mmrepFEMesh.h"
+#include "mmrepImageIO.h"
+#include "mmrepSymmetryPlane.h"
+
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace mmrep
+{
+
+struct AtlasRegistrationOptions
+{
+  // Finest grid level (2^level cells per axis); 0: automatic, the finest level whose smallest
+  // cell is at least twice the distance-map spacing (finer cells cannot see more of the map).
+  int finestLevel = 0;
+  double mapSpacing = 1.5;    // mm, distance maps of the subject skin and skull
+  double mapMargin = 15.0;    // mm, around the subject surfaces
+  double gridMargin = 0.10;   // box of the aligned atlas points grown by this fraction per side
+  double stepSafety = 0.4;    // |δ| ≤ stepSafety / max|∇φ|
+  int maximumSweeps = 10;     // per level
+  double tolerance = 5e-3;    // relative energy decrease per sweep that ends a level
+  double controlPointWeight = 10.0;    // initial W_i (one skin node counts 1)
+  double controlPointTolerance = 0.5;  // mm: W_i doubles while the control point is farther
+  double controlPointWeightCap = 1000; // upper bound of W_i
+  bool symmetric = true;      // mirrored steps about the subject plane (needs a symmetric atlas)
+  // Node sets of the atlas: attracted to the subject skin / skull; `lips` is only reported.
+  std::string skinSet = "skin", skullSet = "skull", lipsSet = "lips";
+  std::function<void(double)> progress; // fraction in [0, 1]
+};
+
+// The subject: surfaces (LPS mm), optional precomputed distance maps (computed when null),
+// control points (matched to the atlas landmarks by name) and the symmetry plane.
+struct SubjectData
+{
+  vtkSmartPointer<vtkPolyData> skin, skull;
+  FloatImage::Pointer skinMap, skullMap;
+  std::vector<Landmark> controlPoints;
+  Plane plane;
+};
+
+struct SurfaceErrorStatistics
+{
+  std::size_t count = 0;
+  double mean = 0, max = 0, sigma = 0; // mm, node to the surface triangles
+};
+
+struct RegistrationStage
+{
+  std::string name; // "similarity", "elastic", "refinement"
+  double seconds = 0;
+  SurfaceErrorStatistics skin, skull, lips;
+  double controlMean = 0, controlMax = 0; // mm
+  std::vector<std::size_t> stepsPerLevel;
+  std::vector<int> sweepsPerLevel;
+  double energyBefore = 0, energyAfter = 0;
+};
+
+struct RegistrationReport
+{
+  std::vector<RegistrationStage> stages;
+  std::vector<std::string> controlNames;
+  std::vector<double> controlErrors;  // mm, after the last stage
+  std::vector<double> controlWeights; // final W_i
+  std::string ToJson() const;         // pretty-printed JSON
+  const RegistrationStage& Last() const { return stages.back(); }
+};
+
+struct AtlasRegistrationResult
+{
+  ElasticTransform transform; // atlas (world) -> subject (world), similarity included
+  FEMesh mesh;                // registered atlas
+  RegistrationReport report;
+};
+
+// Throws std::invalid_argument (bad sets, control point names, planes) or std::runtime_error
+// (empty surfaces, atlas and subject not overlapping after the alignment), one line each.
+AtlasRegistrationResult RegisterAtlas(const FEMesh& atlas, const Plane& atlasPlane, const SubjectData& subject,
+                                      const AtlasRegistrationOptions& options = {});
+
+struct LocalRefinementOptions
+{
+  double spacing = 0.5;  // mm, fine skin distance map over the refinement box
+  // Finest level of Q's grid; 0: automatic (smallest cell ≥ 2 × spacing).
+  int finestLevel = 0;
+  double boxMargin = 0.25;   // the region set's bounding box grown by this fraction per side…
+  double minimumMargin = 4;  // …and by at least this many mm
+  double stepSafety = 0.4;
+  int maximumSweeps = 30;
+  double tolerance = 1e-4;
+  // Region to refine and the nodes attracted: skin nodes inside the box (the region's own skin
+  // nodes and their neighbours, which Q moves too and must stay on the skin).
+  std::string regionSet = "lips", skinSet = "skin";
+  bool symmetric = false; // mirrored steps about `plane` (keeps a symmetric mesh symmetric)
+  Plane plane;
+  std::function<void(double)> progress;
+};
+
+struct LocalRefinementResult
+{
+  ElasticTransform transform; // Q (world -> world, identity outside the box)
+  FEMesh mesh;
+  RegistrationStage before, after; // errors of the region's skin nodes in `lips`, all skin in `skin`
+  Eigen::Vector3d boxMin = Eigen::Vector3d::Zero(), boxMax = Eigen::Vector3d::Zero(); // frame coords
+};
+
+LocalRefinementResult RefineLocally(const FEMesh& registered, vtkPolyData* skin,
+                                    const LocalRefinementOptions& options = {});
+
+// Moves every node and landmark of the mesh by the transform.
+void ApplyTransform(const ElasticTransform& transform, FEMesh& mesh);
+
+// Node-to-triangle distances of the given nodes (vtkStaticCellLocator).
+SurfaceErrorStatistics MeasureSurfaceError(const std::vector<Point3>& nodes, const std::vector<std::int32_t>& ids,
+                                           vtkPolyData* surface);
+
+// Least-squares plane through a node set (e.g. the atlas's `midsagittal` nodes), normal towards
+// +x (patient left). Throws std::invalid_argument when the set is missing or has < 3 nodes.
+Plane FitPlaneToNodeSet(const FEMesh& mesh, const std::string& set);
+
+} // namespace mmrep

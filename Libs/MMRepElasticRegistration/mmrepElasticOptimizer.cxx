@@ -1,0 +1,342 @@
+#include "mmrepElasticOptimizer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace mmrep
+{
+
+namespace
+{
+constexpr int kPad = 2; // padded cells beyond the box (boundary supports reach one cell out)
+
+class Engine
+{
+public:
+  Engine(ElasticTransform& t, ElasticProblem& p, const ElasticOptimizerOptions& o)
+    : transform_(t), problem_(p), options_(o), frameToWorld_(t.frameRotation.transpose())
+  {
+  }
+
+  std::size_t Count() const { return problem_.points.size() + problem_.controlSources.size(); }
+  Eigen::Vector3d& Position(std::size_t k)
+  {
+    return k < problem_.points.size() ? problem_.points[k] : problem_.controlSources[k - problem_.points.size()];
+  }
+
+  // Energy term of tracked point k at position p, and its gradient (frame coordinates).
+  double Term(std::size_t k, const Eigen::Vector3d& p, Eigen::Vector3d* g) const
+  {
+    if (k < problem_.points.size())
+    {
+      Eigen::Vector3d gw;
+      const double v =
+        problem_.maps[static_cast<std::size_t>(problem_.pointMap[k])].Value(transform_.ToWorld(p), g ? &gw : nullptr);
+      if (g)
+        *g = transform_.frameRotation * gw;
+      return v;
+    }
+    const std::size_t i = k - problem_.points.size();
+    const Eigen::Vector3d d = p - problem_.controlTargets[i];
+    const double n = d.norm();
+    if (g)
+      *g = n > 0 ? Eigen::Vector3d(problem_.controlWeights[i] * d / n) : Eigen::Vector3d::Zero();
+    return problem_.controlWeights[i] * n;
+  }
+
+  double TotalEnergy()
+  {
+    double e = 0;
+    for (std::size_t k = 0; k < Count(); ++k)
+      e += Term(k, Position(k), nullptr);
+    return e;
+  }
+
+  void UpdateWeights()
+  {
+    for (std::size_t i = 0; i < problem_.controlSources.size(); ++i)
+      if ((problem_.controlSources[i] - problem_.controlTargets[i]).norm() > options_.controlPointTolerance)
+        problem_.controlWeights[i] = std::min(2.0 * problem_.controlWeights[i], options_.controlPointWeightCap);
+  }
+
+  long long CellKey(const Eigen::Vector3d& p) const
+  {
+    long long key = 0;
+    for (int a = 2; a >= 0; --a)
+    {
+      const double c = std::floor((p[a] - level_->boxMin[a]) / level_->h[a]);
+      if (!(c >= -kPad && c <= level_->cells - 1 + kPad))
+        return -1;
+      key = key * dim_ + (static_cast<long long>(c) + kPad);
+    }
+    return key;
+  }
+
+  void Bucket()
+  {
+    cells_.clear();
+    cellOf_.assign(Count(), -1);
+    for (std::size_t k = 0; k < Count(); ++k)
+    {
+      cellOf_[k] = CellKey(Position(k));
+      if (cellOf_[k] >= 0)
+        cells_[cellOf_[k]].push_back(static_cast<int>(k));
+    }
+  }
+
+  void Move(std::size_t k, const Eigen::Vector3d& p)
+  {
+    Position(k) = p;
+    const long long key = CellKey(p);
+    if (key == cellOf_[k])
+      return;
+    if (cellOf_[k] >= 0)
+    {
+      auto& v = cells_[cellOf_[k]];
+      v.erase(std::find(v.begin(), v.end(), static_cast<int>(k)));
+    }
+    cellOf_[k] = key;
+    if (key >= 0)
+      cells_[key].push_back(static_cast<int>(k));
+  }
+
+  double NodeCoordinate(int axis, int i) const
+  {
+    // Symmetric grids: x nodes at (i − cells/2) h so that mirror nodes are exact negatives.
+    if (options_.symmetric && axis == 0)
+      return (i - level_->cells / 2) * level_->h.x();
+    return level_->boxMin[axis] + i * level_->h[axis];
+  }
+
+  // Points possibly in the support of node (ix, iy, iz): its 2×2×2 cells plus one cell of slack.
+  void Gather(int ix, int iy, int iz, std::vector<int>& out) const
+  {
+    for (int z = iz - 2; z <= iz + 1; ++z)
+      for (int y = iy - 2; y <= iy + 1; ++y)
+        for (int x = ix - 2; x <= ix + 1; ++x)
+        {
+          if (x + kPad < 0 || y + kPad < 0 || z + kPad < 0 || x + kPad >= dim_ || y + kPad >= dim_ || z + kPad >= dim_)
+            continue;
+          const long long key = ((static_cast<long long>(z + kPad) * dim_) + (y + kPad)) * dim_ + (x + kPad);
+          const auto it = cells_.find(key);
+          if (it != cells_.end())
+            out.insert(out.end(), it->second.begin(), it->second.end());
+        }
+  }
+
+  // Sorted node ids (z, y, x order) whose support holds at least one point; symmetric grids keep
+  // the node of each mirror pair with x index ≤ cells/2.
+  std::vector<long long> CandidateNodes() const
+  {
+    const int n = level_->cells;
+    const int lo = options_.fixBoundary ? 1 : 0, hi = options_.fixBoundary ? n - 1 : n;
+    std::vector<long long> nodes;
+    for (const auto& [key, ids] : cells_)
+    {
+      if (ids.empty())
+        continue;
+      long long r = key;
+      const int cx = static_cast<int>(r % dim_) - kPad;
+      r /= dim_;
+      const int cy = static_cast<int>(r % dim_) - kPad;
+      const int cz = static_cast<int>(r / dim_) - kPad;
+      for (int z = cz; z <= cz + 1; ++z)
+        for (int y = cy; y <= cy + 1; ++y)
+          for (int x = cx; x <= cx + 1; ++x)
+          {
+            if (x < lo || x > hi || y < lo || y > hi || z < lo || z > hi)
+              continue;
+            const int mx = options_.symmetric ? std::min(x, n - x) : x;
+            nodes.push_back((static_cast<long long>(z) * (n + 1) + y) * (n + 1) + mx);
+          }
+    }
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    return nodes;
+  }
+
+  // One node: gradient, line search, step. Returns true when a step was taken.
+  bool VisitNode(long long id, double maxStep)
+  {
+    const int n = level_->cells;
+    const int ix = static_cast<int>(id % (n + 1));
+    const int iy = static_cast<int>((id / (n + 1)) % (n + 1));
+    const int iz = static_cast<int>(id / ((n + 1) * (n + 1)));
+    ElasticStep step;
+    step.node = Eigen::Vector3d(NodeCoordinate(0, ix), NodeCoordinate(1, iy), NodeCoordinate(2, iz));
+    const bool onPlane = options_.symmetric && 2 * ix == n;
+    step.mirrored = options_.symmetric && !onPlane;
+    gathered_.clear();
+    Gather(ix, iy, iz, gathered_);
+    if (step.mirrored)
+      Gather(n - ix, iy, iz, gathered_);
+    std::sort(gathered_.begin(), gathered_.end());
+    gathered_.erase(std::unique(gathered_.begin(), gathered_.end()), gathered_.end());
+    if (gathered_.empty())
+      return false;
+
+    const Eigen::Vector3d mirrorNode(-step.node.x(), step.node.y(), step.node.z());
+    Eigen::Vector3d g = Eigen::Vector3d::Zero();
+    double e0 = 0;
+    active_.clear();
+    for (int k : gathered_)
+    {
+      const Eigen::Vector3d& p = Position(static_cast<std::size_t>(k));
+      const double f1 = ElasticTransform::Bump(p, step.node, level_->h);
+      const double f2 = step.mirrored ? ElasticTransform::Bump(p, mirrorNode, level_->h) : 0.0;
+      if (f1 == 0.0 && f2 == 0.0)
+        continue;
+      Eigen::Vector3d ge;
+      e0 += Term(static_cast<std::size_t>(k), p, &ge);
+      g += f1 * ge;
+      if (step.mirrored)
+        g += f2 * Eigen::Vector3d(-ge.x(), ge.y(), ge.z()); // d/dδ of the mirrored displacement Mδ
+      active_.push_back(k);
+    }
+    if (onPlane)
+      g.x() = 0; // plane nodes move within the plane
+    const double gn = g.norm();
+    if (active_.empty() || !(gn > 0))
+      return false;
+    const Eigen::Vector3d direction = -g / gn;
+    // Mirror supports overlapping (node within one cell of the plane): two bumps add up, halve.
+    double alpha = maxStep;
+    if (step.mirrored && std::abs(step.node.x()) < level_->h.x())
+      alpha *= 0.5;
+
+    auto trial = [&](double a, std::vector<Eigen::Vector3d>& moved) {
+      ElasticStep s = step;
+      s.delta = a * direction;
+      if (onPlane)
+        s.delta.x() = 0;
+      double e = 0;
+      moved.resize(active_.size());
+      for (std::size_t j = 0; j < active_.size(); ++j)
+      {
+        const auto k = static_cast<std::size_t>(active_[j]);
+        moved[j] = ElasticTransform::ApplyStep(s, level_->h, Position(k));
+        e += Term(k, moved[j], nullptr);
+      }
+      return std::make_pair(e, s);
+    };
+    for (int halving = 0; halving < 12; ++halving, alpha *= 0.5)
+    {
+      auto [e, s] = trial(alpha, movedA_);
+      if (!(e < e0))
+        continue;
+      // Keep halving while the energy keeps dropping: the best of the halving sequence, which
+      // avoids overshooting steps that later steps would have to undo.
+      for (int more = halving + 1; more < 16; ++more)
+      {
+        alpha *= 0.5;
+        auto [eHalf, sHalf] = trial(alpha, movedB_);
+        if (!(eHalf < e))
+          break;
+        e = eHalf;
+        s = sHalf;
+        movedA_.swap(movedB_);
+      }
+      for (std::size_t j = 0; j < active_.size(); ++j)
+        Move(static_cast<std::size_t>(active_[j]), movedA_[j]);
+      level_->steps.push_back(s);
+      return true;
+    }
+    return false;
+  }
+
+  ElasticOptimizerStats Run()
+  {
+    ElasticOptimizerStats stats;
+    if (options_.firstLevel < 1 || options_.finestLevel < options_.firstLevel || options_.finestLevel > 10)
+      throw std::invalid_argument("elastic registration: levels must satisfy 1 <= first <= finest <= 10");
+    if (!(options_.stepSafety > 0 && options_.stepSafety < 1))
+      throw std::invalid_argument("elastic registration: the step safety factor must be in (0, 1)");
+    const Eigen::Vector3d extent = problem_.boxMax - problem_.boxMin;
+    if (!(extent.minCoeff() > 0))
+      throw std::invalid_argument("elastic registration: the grid box is empty");
+    stats.initialEnergy = TotalEnergy();
+    const int levelCount = options_.finestLevel - options_.firstLevel + 1;
+    for (int l = options_.firstLevel; l <= options_.finestLevel; ++l)
+    {
+      ElasticLevel level;
+      level.level = l;
+      level.cells = 1 << l;
+      level.boxMin = problem_.boxMin;
+      level.h = extent / level.cells;
+      transform_.levels.push_back(level);
+      level_ = &transform_.levels.back();
+      dim_ = level_->cells + 2 * kPad;
+      const double maxStep = options_.stepSafety / MaximumBumpGradient(level_->h);
+      Bucket();
+      int sweeps = 0;
+      double energy = TotalEnergy();
+      while (sweeps < options_.maximumSweeps)
+      {
+        ++sweeps;
+        const auto nodes = CandidateNodes();
+        for (long long id : nodes)
+          VisitNode(id, maxStep);
+        const double after = TotalEnergy();
+        const bool converged = !(energy - after > options_.tolerance * std::max(energy, 1e-12));
+        UpdateWeights();
+        energy = TotalEnergy(); // with the new weights
+        if (options_.progress)
+          options_.progress((l - options_.firstLevel + std::min(1.0, double(sweeps) / options_.maximumSweeps)) /
+                            levelCount);
+        if (converged)
+          break;
+      }
+      stats.sweepsPerLevel.push_back(sweeps);
+      stats.energyAfterLevel.push_back(energy);
+      if (options_.progress)
+        options_.progress(double(l - options_.firstLevel + 1) / levelCount);
+    }
+    transform_.BuildIndex();
+    return stats;
+  }
+
+private:
+  ElasticTransform& transform_;
+  ElasticProblem& problem_;
+  const ElasticOptimizerOptions& options_;
+  Eigen::Matrix3d frameToWorld_;
+  ElasticLevel* level_ = nullptr;
+  long long dim_ = 0;
+  std::unordered_map<long long, std::vector<int>> cells_;
+  std::vector<long long> cellOf_;
+  std::vector<int> gathered_, active_;
+  std::vector<Eigen::Vector3d> movedA_, movedB_;
+};
+} // namespace
+
+ElasticOptimizerStats OptimizeElastic(ElasticTransform& transform, ElasticProblem& problem,
+                                      const ElasticOptimizerOptions& options)
+{
+  if (problem.pointMap.size() != problem.points.size())
+    throw std::invalid_argument("elastic registration: one map index per point is required");
+  for (int m : problem.pointMap)
+    if (m < 0 || static_cast<std::size_t>(m) >= problem.maps.size())
+      throw std::invalid_argument("elastic registration: a point refers to a missing distance map");
+  if (problem.controlTargets.size() != problem.controlSources.size() ||
+      problem.controlWeights.size() != problem.controlSources.size())
+    throw std::invalid_argument("elastic registration: control sources, targets and weights differ in number");
+  if (options.symmetric && std::abs(problem.boxMin.x() + problem.boxMax.x()) > 1e-9 * problem.boxMax.x())
+    throw std::invalid_argument("elastic registration: a symmetric grid box must be centred on frame x = 0");
+  Engine engine(transform, problem, options);
+  return engine.Run();
+}
+
+double ElasticEnergy(const ElasticTransform& transform, const ElasticProblem& problem)
+{
+  double e = 0;
+  for (std::size_t k = 0; k < problem.points.size(); ++k)
+    e += problem.maps[static_cast<std::size_t>(problem.pointMap[k])].Value(transform.ToWorld(problem.points[k]));
+  for (std::size_t i = 0; i < problem.controlSources.size(); ++i)
+    e += problem.controlWeights[i] * (problem.controlSources[i] - problem.controlTargets[i]).norm();
+  return e;
+}
+
+} // namespace mmrep

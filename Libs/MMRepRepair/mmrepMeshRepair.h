@@ -1,0 +1,58 @@
+// Mesh reparation (Bucki, Lobos, Payan, Hitschfeld 2011, improved as the MMRep-for-speech paper's
+// conclusion proposes): first make every element regular (positive Jacobian at every corner),
+// then raise every element's scaled Jacobian to a threshold, moving the nodes of the worst elements
+// first and inner nodes before surface nodes; surface nodes slide on their surface (projected
+// back onto it) and mid-sagittal nodes stay on the symmetry plane, so accuracy and symmetry are
+// kept. A mesh already valid above the threshold is returned unchanged, bit for bit.
+#pragma once
+
+#include "mmrepFEMesh.h"
+#include "mmrepSymmetryPlane.h"
+
+#include <vtkPolyData.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace mmrep
+{
+
+struct RepairOptions
+{
+  double scaledJacobianThreshold = 0.3; // every solid element must reach this
+  int maximumSweeps = 200;              // passes over the elements below the threshold
+  // Surfaces the `skin` and `skull` node sets must stay on (nullptr: the mesh's own boundary).
+  vtkPolyData* skinSurface = nullptr;
+  vtkPolyData* skullSurface = nullptr;
+  // Nodes of the `midsagittal` set stay on this plane (and the result stays symmetric about it
+  // when the input is) when set. Without a plane, `midsagittal` nodes stay on the plane fitted to
+  // them when they are coplanar.
+  bool hasSymmetryPlane = false;
+  Plane symmetryPlane;
+  std::function<void(double)> progress; // fraction done
+};
+
+struct RepairReport
+{
+  bool success = false;         // every element regular and >= threshold
+  double minScaledJacobianBefore = 0, minScaledJacobianAfter = 0;   // NaN when every element is degenerate
+  double meanScaledJacobianBefore = 0, meanScaledJacobianAfter = 0; // (as quality::SummarizeScaledJacobian)
+  std::size_t invertedBefore = 0, invertedAfter = 0;
+  std::size_t belowThresholdBefore = 0, belowThresholdAfter = 0; // degenerate elements included
+  std::size_t movedNodes = 0;
+  std::size_t movedSurfaceNodes = 0;       // of which in `skin` or `skull`
+  bool symmetricPairs = false;             // mirror node pairs were moved together
+  std::vector<std::size_t> failedElements; // elements still below the threshold, worst first
+  // Their scaled Jacobians, same order; a degenerate element (zero-length edge, Verdict's 1e30
+  // flag) is reported as -infinity.
+  std::vector<double> failedValues;
+  double seconds = 0;
+};
+
+// Repairs `mesh` in place and reports. Never throws for a mesh that cannot be repaired: the report
+// says which elements fail and how bad they are. Throws std::invalid_argument for invalid meshes
+// (bad indices, no solid element), a threshold outside [-1, 1] or an empty surface.
+RepairReport RepairMesh(FEMesh& mesh, const RepairOptions& options);
+
+} // namespace mmrep

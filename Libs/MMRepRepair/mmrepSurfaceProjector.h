@@ -1,0 +1,37 @@
+// Closest points on a triangle surface (vtkStaticCellLocator), used to keep skin and skull nodes on
+// their surfaces while the repair slides them, and to measure surface accuracy.
+#pragma once
+
+#include "mmrepFEMesh.h"
+
+#include <vtkGenericCell.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStaticCellLocator.h>
+
+#include <vector>
+
+namespace mmrep
+{
+
+class SurfaceProjector
+{
+public:
+  // Throws std::invalid_argument when the surface is null or has no cells.
+  explicit SurfaceProjector(vtkPolyData* surface);
+  Point3 Project(const Point3& p) const; // closest point of the surface
+  double Distance(const Point3& p) const;
+  // Unit normal of the surface cell closest to p (zero for a degenerate cell).
+  Point3 Normal(const Point3& p) const;
+
+private:
+  vtkSmartPointer<vtkPolyData> surface_;
+  vtkSmartPointer<vtkStaticCellLocator> locator_;
+  vtkSmartPointer<vtkGenericCell> cell_; // scratch cell: the projector is not thread-safe
+};
+
+// Boundary faces of the mesh's solid elements (faces used by one element only), quads split into
+// two triangles; only faces whose nodes all have nodeMask[node] != 0 when a mask is given.
+vtkSmartPointer<vtkPolyData> BoundarySurface(const FEMesh& mesh, const std::vector<char>* nodeMask = nullptr);
+
+} // namespace mmrep
