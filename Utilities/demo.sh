@@ -14,22 +14,25 @@ render=()
 if [ -z "${DISPLAY:-}" ]; then render=(xvfb-run -a -s "-screen 0 2560x1600x24"); fi
 
 step() { echo; echo "== $*"; }
+# Runs a module and hides its Slicer progress lines; the module's exit status is kept (grep's "no
+# line left" is not a failure).
+run() { "$@" | { grep -v '^<' || true; }; }
 
 step "SkinSkullSurfaces: CT -> skin and skull surfaces (+ picture)"
-"${render[@]}" "$bin/SkinSkullSurfaces" "$ct" "$out/skin.vtp" "$out/skull.vtp" \
+run "${render[@]}" "$bin/SkinSkullSurfaces" "$ct" "$out/skin.vtp" "$out/skull.vtp" \
   --skinMask "$out/skin-mask.nrrd" --snapshot "$out/skin-skull.png" \
-  --returnparameterfile "$out/SkinSkullSurfaces.txt" | grep -v '^<'
+  --returnparameterfile "$out/SkinSkullSurfaces.txt"
 
 step "DistanceMap: skin and skull distance maps at 1.5 mm (the paper's resolution)"
-"$bin/DistanceMap" "$out/skin.vtp" "$out/skin-distance.nrrd" --spacing 1.5 | grep -v '^<'
-"$bin/DistanceMap" "$out/skull.vtp" "$out/skull-distance.nrrd" --spacing 1.5 | grep -v '^<'
+run "$bin/DistanceMap" "$out/skin.vtp" "$out/skin-distance.nrrd" --spacing 1.5
+run "$bin/DistanceMap" "$out/skull.vtp" "$out/skull-distance.nrrd" --spacing 1.5
 
 atlas="$root/Resources/Atlas/FaceAtlas.vtu"
 if [ -f "$atlas" ]; then
   step "MeshQuality and MeshConvert on the shipped face atlas"
-  "$bin/MeshQuality" "$atlas" --outputMesh "$out/atlas-quality.vtu" | grep -v '^<'
+  run "$bin/MeshQuality" "$atlas" --outputMesh "$out/atlas-quality.vtu"
   for ext in inp feb msh; do
-    "$bin/MeshConvert" "$atlas" "$out/atlas.$ext" | grep -v '^<'
+    run "$bin/MeshConvert" "$atlas" "$out/atlas.$ext"
   done
 fi
 
