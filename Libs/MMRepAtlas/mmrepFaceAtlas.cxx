@@ -370,9 +370,9 @@ FaceAtlas BuildFaceAtlas(vtkPolyData* skinWorld, vtkPolyData* skullWorld, const 
 
   // --- Mesh (world): left nodes, right mirrored nodes, left hexahedra, mirrored hexahedra.
   FEMesh& mesh = atlas.mesh;
-  auto buildMesh = [&]() {
-    mesh = FEMesh();
-    mesh.nodes.resize(grid.LeftNodeCount() + rows * (cols - 1) * 4);
+  // World nodes from the left half's local positions: the left half as is, the right half its
+  // exact mirror image (nodes on the plane, column 0, are shared).
+  auto writeNodesFromLeftHalf = [&]() {
     for (int side = 0; side < 2; ++side)
       for (int i = 0; i < rows; ++i)
         for (int j = side; j < cols; ++j)
@@ -383,6 +383,11 @@ FaceAtlas BuildFaceAtlas(vtkPolyData* skinWorld, vtkPolyData* skullWorld, const 
               p.x() = -p.x();
             mesh.nodes[grid.Node(i, j, k, side)] = frame.ToWorld(p);
           }
+  };
+  auto buildMesh = [&]() {
+    mesh = FEMesh();
+    mesh.nodes.resize(grid.LeftNodeCount() + rows * (cols - 1) * 4);
+    writeNodesFromLeftHalf();
     mesh.elements.resize(2 * grid.LeftElementCount());
     for (int side = 0; side < 2; ++side)
       for (int i = 0; i + 1 < rows; ++i)
@@ -471,16 +476,7 @@ FaceAtlas BuildFaceAtlas(vtkPolyData* skinWorld, vtkPolyData* skullWorld, const 
             p.x() = 0;
           grid.local[grid.LeftNode(i, j, k)] = p;
         }
-    for (int side = 0; side < 2; ++side)
-      for (int i = 0; i < rows; ++i)
-        for (int j = side; j < cols; ++j)
-          for (int k = 0; k < 4; ++k)
-          {
-            Eigen::Vector3d p = grid.local[grid.LeftNode(i, j, k)];
-            if (side == 1)
-              p.x() = -p.x();
-            mesh.nodes[grid.Node(i, j, k, side)] = frame.ToWorld(p);
-          }
+    writeNodesFromLeftHalf();
     const auto q = quality::SummarizeScaledJacobian(mesh, options.qualityThreshold, qo);
     atlas.log.push_back(Format("after repair and symmetrisation: scaled Jacobian min %.3f, mean %.3f; %.0f below the threshold",
                                q.min, q.mean, q.belowThreshold));
@@ -513,16 +509,7 @@ FaceAtlas BuildFaceAtlas(vtkPolyData* skinWorld, vtkPolyData* skullWorld, const 
             p.x() = 0;
           grid.local[n] = p;
         }
-    for (int side = 0; side < 2; ++side)
-      for (int i = 0; i < rows; ++i)
-        for (int j = side; j < cols; ++j)
-          for (int k = 0; k < 4; ++k)
-          {
-            Eigen::Vector3d p = grid.local[grid.LeftNode(i, j, k)];
-            if (side == 1)
-              p.x() = -p.x();
-            mesh.nodes[grid.Node(i, j, k, side)] = frame.ToWorld(p);
-          }
+    writeNodesFromLeftHalf();
     quality::QualityOptions qo;
     qo.threads = 1;
     const auto q = quality::SummarizeScaledJacobian(mesh, options.qualityThreshold, qo);

@@ -58,11 +58,32 @@ const char* ViewName(View v)
 }
 } // namespace
 
-void WriteSnapshot(const std::vector<SnapshotLayer>& layers, const SnapshotOptions& o, const std::string& pngPath)
+void RequireDisplay(const std::string& pngPath)
 {
   const char* display = std::getenv("DISPLAY");
   if (display == nullptr || *display == '\0')
     throw std::runtime_error("no X display for rendering " + pngPath + ": run under xvfb-run -a");
+}
+
+void WriteWindowPNG(vtkRenderWindow* window, const std::string& pngPath)
+{
+  window->SetOffScreenRendering(1);
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkNew<vtkPNGWriter> png;
+  png->SetFileName(pngPath.c_str());
+  png->SetInputConnection(grab->GetOutputPort());
+  png->Write();
+  if (png->GetErrorCode() != 0)
+    throw std::runtime_error("cannot write " + pngPath);
+}
+
+void WriteSnapshot(const std::vector<SnapshotLayer>& layers, const SnapshotOptions& o, const std::string& pngPath)
+{
+  RequireDisplay(pngPath);
   if (o.views.empty())
     throw std::runtime_error("no view requested for " + pngPath);
 
@@ -148,18 +169,7 @@ void WriteSnapshot(const std::vector<SnapshotLayer>& layers, const SnapshotOptio
     renderer->AddActor2D(label);
     window->AddRenderer(renderer);
   }
-  window->Render();
-
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkNew<vtkPNGWriter> png;
-  png->SetFileName(pngPath.c_str());
-  png->SetInputConnection(grab->GetOutputPort());
-  png->Write();
-  if (png->GetErrorCode() != 0)
-    throw std::runtime_error("cannot write " + pngPath);
+  WriteWindowPNG(window, pngPath);
 }
 
 } // namespace mmrep

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <vtkPolyData.h>
+#include <vtkRenderWindow.h>
 
 #include <array>
 #include <string>
@@ -46,6 +47,13 @@ struct SnapshotOptions
   // Zoom on a box (LPS mm: xmin,xmax,ymin,ymax,zmin,zmax) instead of the whole scene.
   std::array<double, 6> focus{1, 0, 1, 0, 1, 0};
 };
+
+// Throws std::runtime_error naming `pngPath` when there is no X display to render into.
+void RequireDisplay(const std::string& pngPath);
+
+// Renders `window` off screen and writes its pixels to a PNG; throws std::runtime_error when the
+// file cannot be written. Building block for pictures other than WriteSnapshot's.
+void WriteWindowPNG(vtkRenderWindow* window, const std::string& pngPath);
 
 // Throws std::runtime_error when no X display is available or the PNG cannot be written.
 void WriteSnapshot(const std::vector<SnapshotLayer>& layers, const SnapshotOptions& options,

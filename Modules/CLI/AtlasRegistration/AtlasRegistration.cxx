@@ -67,91 +67,80 @@ void Run(mmrep::cli::ModuleContext& ctx)
 
   ctx.progress.Start("Atlas registration");
   // Library errors (bad files, sets, names) become one-line module errors.
-  try
+  const auto atlas = mmrep::ReadFEMesh(args.String("atlasMesh"));
+  mmrep::SubjectData subject;
+  subject.skin = mmrep::ReadSurface(args.String("subjectSkin"));
+  subject.skull = mmrep::ReadSurface(args.String("subjectSkull"));
+  subject.controlPoints = mmrep::ReadLandmarks(args.String("subjectControlPoints"));
+
+  const mmrep::Plane atlasPlane = args.Given("atlasPlane") ? PlaneArgument(args, "atlasPlane")
+                                                           : mmrep::FitPlaneToNodeSet(atlas, "midsagittal");
+  if (args.Given("subjectPlane"))
+    subject.plane = PlaneArgument(args, "subjectPlane");
+  else
   {
-    const auto atlas = mmrep::ReadFEMesh(args.String("atlasMesh"));
-    mmrep::SubjectData subject;
-    subject.skin = mmrep::ReadSurface(args.String("subjectSkin"));
-    subject.skull = mmrep::ReadSurface(args.String("subjectSkull"));
-    subject.controlPoints = mmrep::ReadLandmarks(args.String("subjectControlPoints"));
-
-    const mmrep::Plane atlasPlane = args.Given("atlasPlane") ? PlaneArgument(args, "atlasPlane")
-                                                             : mmrep::FitPlaneToNodeSet(atlas, "midsagittal");
-    if (args.Given("subjectPlane"))
-      subject.plane = PlaneArgument(args, "subjectPlane");
-    else
-    {
-      if (subject.skin->GetNumberOfPolys() == 0)
-        throw ModuleError(args.String("subjectSkin") + ": the skin surface has no triangles");
-      subject.plane = mmrep::EstimateSymmetryPlane(subject.skin).plane;
-      std::cout << "Subject plane (estimated): point " << subject.plane.point.transpose() << ", normal "
-                << subject.plane.normal.transpose() << std::endl;
-    }
-    ctx.progress.Report(0.05);
-
-    mmrep::AtlasRegistrationOptions options;
-    options.finestLevel = static_cast<int>(args.Int("levels"));
-    options.mapSpacing = args.Double("mapSpacing");
-    options.controlPointWeight = args.Double("controlPointWeight");
-    options.symmetric = !args.Bool("asymmetric");
-    options.progress = [&](double f) { ctx.progress.ReportRange(0.05, 0.9, f); };
-    const auto result = mmrep::RegisterAtlas(atlas, atlasPlane, subject, options);
-
-    mmrep::WriteFEMesh(result.mesh, outputs[0]->TempPath(),
-                       mmrep::cli::FileExtension(outputs[0]->FinalPath()).substr(1));
-    if (fieldOut)
-    {
-      // Grid over the atlas (where the field is defined: atlas points), 10 mm margin.
-      Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
-      for (const auto& n : atlas.nodes)
-      {
-        lo = lo.cwiseMin(n);
-        hi = hi.cwiseMax(n);
-      }
-      const double spacing = args.Double("transformSpacing");
-      auto grid = itk::Image<float, 3>::New();
-      itk::Image<float, 3>::RegionType region;
-      itk::Image<float, 3>::PointType origin;
-      for (unsigned a = 0; a < 3; ++a)
-      {
-        origin[a] = lo[a] - 10.0;
-        region.SetSize(a, static_cast<itk::SizeValueType>(std::ceil((hi[a] - lo[a] + 20.0) / spacing)) + 1);
-      }
-      grid->SetRegions(region);
-      grid->SetOrigin(origin);
-      grid->SetSpacing(spacing);
-      mmrep::WriteDisplacementField(result.transform.ToDisplacementField(grid), fieldOut->TempPath());
-    }
-    if (reportOut)
-    {
-      std::ofstream f(reportOut->TempPath());
-      f << result.report.ToJson() << "\n";
-      if (!f)
-        throw ModuleError(reportOut->FinalPath() + ": cannot write the report");
-    }
-    for (auto& o : outputs)
-      o->Commit();
-
-    const auto& r = result.report.Last();
-    std::cout << "Skin error " << r.skin.mean << " mm mean, " << r.skin.max << " mm max; skull " << r.skull.mean
-              << " / " << r.skull.max << " mm; control points " << r.controlMean << " / " << r.controlMax << " mm; "
-              << result.transform.StepCount() << " steps" << std::endl;
-    ctx.outputs.Set("skinMeanError", r.skin.mean);
-    ctx.outputs.Set("skinMaxError", r.skin.max);
-    ctx.outputs.Set("skullMeanError", r.skull.mean);
-    ctx.outputs.Set("skullMaxError", r.skull.max);
-    ctx.outputs.Set("controlPointMeanError", r.controlMean);
-    ctx.outputs.Set("controlPointMaxError", r.controlMax);
-    ctx.outputs.Set("seconds", r.seconds);
+    if (subject.skin->GetNumberOfPolys() == 0)
+      throw ModuleError(args.String("subjectSkin") + ": the skin surface has no triangles");
+    subject.plane = mmrep::EstimateSymmetryPlane(subject.skin).plane;
+    std::cout << "Subject plane (estimated): point " << subject.plane.point.transpose() << ", normal "
+              << subject.plane.normal.transpose() << std::endl;
   }
-  catch (const ModuleError&)
+  ctx.progress.Report(0.05);
+
+  mmrep::AtlasRegistrationOptions options;
+  options.finestLevel = static_cast<int>(args.Int("levels"));
+  options.mapSpacing = args.Double("mapSpacing");
+  options.controlPointWeight = args.Double("controlPointWeight");
+  options.symmetric = !args.Bool("asymmetric");
+  options.progress = [&](double f) { ctx.progress.ReportRange(0.05, 0.9, f); };
+  const auto result = mmrep::RegisterAtlas(atlas, atlasPlane, subject, options);
+
+  mmrep::WriteFEMesh(result.mesh, outputs[0]->TempPath(),
+                     mmrep::cli::FileExtension(outputs[0]->FinalPath()).substr(1));
+  if (fieldOut)
   {
-    throw;
+    // Grid over the atlas (where the field is defined: atlas points), 10 mm margin.
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
+    for (const auto& n : atlas.nodes)
+    {
+      lo = lo.cwiseMin(n);
+      hi = hi.cwiseMax(n);
+    }
+    const double spacing = args.Double("transformSpacing");
+    auto grid = itk::Image<float, 3>::New();
+    itk::Image<float, 3>::RegionType region;
+    itk::Image<float, 3>::PointType origin;
+    for (unsigned a = 0; a < 3; ++a)
+    {
+      origin[a] = lo[a] - 10.0;
+      region.SetSize(a, static_cast<itk::SizeValueType>(std::ceil((hi[a] - lo[a] + 20.0) / spacing)) + 1);
+    }
+    grid->SetRegions(region);
+    grid->SetOrigin(origin);
+    grid->SetSpacing(spacing);
+    mmrep::WriteDisplacementField(result.transform.ToDisplacementField(grid), fieldOut->TempPath());
   }
-  catch (const std::exception& e)
+  if (reportOut)
   {
-    throw ModuleError(e.what());
+    std::ofstream f(reportOut->TempPath());
+    f << result.report.ToJson() << "\n";
+    if (!f)
+      throw ModuleError(reportOut->FinalPath() + ": cannot write the report");
   }
+  for (auto& o : outputs)
+    o->Commit();
+
+  const auto& r = result.report.Last();
+  std::cout << "Skin error " << r.skin.mean << " mm mean, " << r.skin.max << " mm max; skull " << r.skull.mean
+            << " / " << r.skull.max << " mm; control points " << r.controlMean << " / " << r.controlMax << " mm; "
+            << result.transform.StepCount() << " steps" << std::endl;
+  ctx.outputs.Set("skinMeanError", r.skin.mean);
+  ctx.outputs.Set("skinMaxError", r.skin.max);
+  ctx.outputs.Set("skullMeanError", r.skull.mean);
+  ctx.outputs.Set("skullMaxError", r.skull.max);
+  ctx.outputs.Set("controlPointMeanError", r.controlMean);
+  ctx.outputs.Set("controlPointMaxError", r.controlMax);
+  ctx.outputs.Set("seconds", r.seconds);
   ctx.progress.End();
 }
 } // namespace

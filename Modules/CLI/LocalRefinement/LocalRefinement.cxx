@@ -33,64 +33,53 @@ void Run(mmrep::cli::ModuleContext& ctx)
     reportOut = std::make_unique<mmrep::cli::AtomicOutput>(args.String("report"));
 
   ctx.progress.Start("Local refinement");
-  try
+  const auto mesh = mmrep::ReadFEMesh(args.String("registeredMesh"));
+  const auto skin = mmrep::ReadSurface(args.String("subjectSkin"));
+  mmrep::LocalRefinementOptions options;
+  options.regionSet = args.String("nodeSet");
+  options.spacing = args.Double("spacing");
+  options.finestLevel = static_cast<int>(args.Int("levels"));
+  if (args.Given("subjectPlane"))
   {
-    const auto mesh = mmrep::ReadFEMesh(args.String("registeredMesh"));
-    const auto skin = mmrep::ReadSurface(args.String("subjectSkin"));
-    mmrep::LocalRefinementOptions options;
-    options.regionSet = args.String("nodeSet");
-    options.spacing = args.Double("spacing");
-    options.finestLevel = static_cast<int>(args.Int("levels"));
-    if (args.Given("subjectPlane"))
-    {
-      const auto v = args.Doubles("subjectPlane");
-      if (v.size() != 6)
-        throw ModuleError("--subjectPlane: expected six numbers (point x,y,z and normal nx,ny,nz), got " +
-                          std::to_string(v.size()));
-      options.symmetric = true;
-      options.plane.point = Eigen::Vector3d(v[0], v[1], v[2]);
-      options.plane.normal = Eigen::Vector3d(v[3], v[4], v[5]);
-      if (!(options.plane.normal.norm() > 1e-9))
-        throw ModuleError("--subjectPlane: the normal must be non-zero");
-      options.plane.normal.normalize();
-    }
-    options.progress = [&](double f) { ctx.progress.ReportRange(0.05, 0.95, f); };
-    const auto result = mmrep::RefineLocally(mesh, skin, options);
+    const auto v = args.Doubles("subjectPlane");
+    if (v.size() != 6)
+      throw ModuleError("--subjectPlane: expected six numbers (point x,y,z and normal nx,ny,nz), got " +
+                        std::to_string(v.size()));
+    options.symmetric = true;
+    options.plane.point = Eigen::Vector3d(v[0], v[1], v[2]);
+    options.plane.normal = Eigen::Vector3d(v[3], v[4], v[5]);
+    if (!(options.plane.normal.norm() > 1e-9))
+      throw ModuleError("--subjectPlane: the normal must be non-zero");
+    options.plane.normal.normalize();
+  }
+  options.progress = [&](double f) { ctx.progress.ReportRange(0.05, 0.95, f); };
+  const auto result = mmrep::RefineLocally(mesh, skin, options);
 
-    mmrep::WriteFEMesh(result.mesh, meshOut.TempPath(), ext.substr(1));
-    if (reportOut)
-    {
-      const nlohmann::json j = {{"regionSet", options.regionSet},
-                                {"before", {{"region", Stats(result.before.lips)}, {"skin", Stats(result.before.skin)}}},
-                                {"after", {{"region", Stats(result.after.lips)}, {"skin", Stats(result.after.skin)}}},
-                                {"seconds", result.after.seconds},
-                                {"stepsPerLevel", result.after.stepsPerLevel},
-                                {"sweepsPerLevel", result.after.sweepsPerLevel}};
-      std::ofstream f(reportOut->TempPath());
-      f << j.dump(2) << "\n";
-      if (!f)
-        throw ModuleError(reportOut->FinalPath() + ": cannot write the report");
-    }
-    meshOut.Commit();
-    if (reportOut)
-      reportOut->Commit();
-    std::cout << "Region '" << options.regionSet << "': mean " << result.before.lips.mean << " -> "
-              << result.after.lips.mean << " mm, max " << result.before.lips.max << " -> " << result.after.lips.max
-              << " mm; " << result.transform.StepCount() << " steps" << std::endl;
-    ctx.outputs.Set("lipsMeanBefore", result.before.lips.mean);
-    ctx.outputs.Set("lipsMaxBefore", result.before.lips.max);
-    ctx.outputs.Set("lipsMeanAfter", result.after.lips.mean);
-    ctx.outputs.Set("lipsMaxAfter", result.after.lips.max);
-    ctx.outputs.Set("seconds", result.after.seconds);
-  }
-  catch (const ModuleError&)
+  mmrep::WriteFEMesh(result.mesh, meshOut.TempPath(), ext.substr(1));
+  if (reportOut)
   {
-    throw;
+    const nlohmann::json j = {{"regionSet", options.regionSet},
+                              {"before", {{"region", Stats(result.before.lips)}, {"skin", Stats(result.before.skin)}}},
+                              {"after", {{"region", Stats(result.after.lips)}, {"skin", Stats(result.after.skin)}}},
+                              {"seconds", result.after.seconds},
+                              {"stepsPerLevel", result.after.stepsPerLevel},
+                              {"sweepsPerLevel", result.after.sweepsPerLevel}};
+    std::ofstream f(reportOut->TempPath());
+    f << j.dump(2) << "\n";
+    if (!f)
+      throw ModuleError(reportOut->FinalPath() + ": cannot write the report");
   }
-  catch (const std::exception& e)
-  {
-    throw ModuleError(e.what());
-  }
+  meshOut.Commit();
+  if (reportOut)
+    reportOut->Commit();
+  std::cout << "Region '" << options.regionSet << "': mean " << result.before.lips.mean << " -> "
+            << result.after.lips.mean << " mm, max " << result.before.lips.max << " -> " << result.after.lips.max
+            << " mm; " << result.transform.StepCount() << " steps" << std::endl;
+  ctx.outputs.Set("lipsMeanBefore", result.before.lips.mean);
+  ctx.outputs.Set("lipsMaxBefore", result.before.lips.max);
+  ctx.outputs.Set("lipsMeanAfter", result.after.lips.mean);
+  ctx.outputs.Set("lipsMaxAfter", result.after.lips.max);
+  ctx.outputs.Set("seconds", result.after.seconds);
   ctx.progress.End();
 }
 } // namespace

@@ -1,11 +1,12 @@
 #include "MeshReparationHistogram.h"
 
+#include "mmrepSnapshot.h"
+
 #include <vtkActor2D.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCoordinate.h>
 #include <vtkNew.h>
-#include <vtkPNGWriter.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper2D.h>
@@ -15,7 +16,6 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
 #include <array>
@@ -133,9 +133,7 @@ void AddPanel(vtkRenderer* renderer, const HistogramPanel& panel, double thresho
 
 void WriteHistogramPNG(const std::vector<HistogramPanel>& panels, double threshold, const std::string& pngPath, int bins)
 {
-  const char* display = std::getenv("DISPLAY");
-  if (display == nullptr || *display == '\0')
-    throw std::runtime_error("no X display for rendering " + pngPath + ": run under xvfb-run -a");
+  RequireDisplay(pngPath);
   if (panels.empty())
     throw std::runtime_error("no histogram to draw in " + pngPath);
   std::size_t maxCount = 1;
@@ -157,17 +155,7 @@ void WriteHistogramPNG(const std::vector<HistogramPanel>& panels, double thresho
     AddPanel(renderer, panels[static_cast<std::size_t>(i)], threshold, bins, maxCount);
     window->AddRenderer(renderer);
   }
-  window->Render();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkNew<vtkPNGWriter> png;
-  png->SetFileName(pngPath.c_str());
-  png->SetInputConnection(grab->GetOutputPort());
-  png->Write();
-  if (png->GetErrorCode() != 0)
-    throw std::runtime_error("cannot write " + pngPath);
+  WriteWindowPNG(window, pngPath);
 }
 
 } // namespace mmrep
