@@ -100,10 +100,7 @@ void WriteAbaqus(const FEMesh& mesh, std::ostream& out)
     WriteSet(out, "ELSET", names.elementSets[k++], "element set '" + name + "'", ids);
   for (auto layer : {TissueLayer::None, TissueLayer::Epidermis, TissueLayer::Dermis, TissueLayer::Hypodermis})
   {
-    std::vector<std::int32_t> ids;
-    for (std::size_t i = 0; i < mesh.elements.size(); ++i)
-      if (mesh.elements[i].type != ElementType::Cable && mesh.elements[i].layer == layer)
-        ids.push_back(static_cast<std::int32_t>(i));
+    const auto ids = mesh.SolidElementsOfLayer(layer);
     if (!ids.empty())
       WriteSet(out, "ELSET", names.layers[static_cast<int>(layer)],
                std::string("tissue layer ") + TissueLayerName(layer), ids);

@@ -50,6 +50,15 @@ std::size_t FEMesh::SolidElementCount() const
   return n;
 }
 
+std::vector<std::int32_t> FEMesh::SolidElementsOfLayer(TissueLayer layer) const
+{
+  std::vector<std::int32_t> ids;
+  for (std::size_t i = 0; i < elements.size(); ++i)
+    if (elements[i].type != ElementType::Cable && elements[i].layer == layer)
+      ids.push_back(static_cast<std::int32_t>(i));
+  return ids;
+}
+
 void FEMesh::Validate() const
 {
   const auto nodeCount = static_cast<std::int64_t>(nodes.size());
@@ -102,10 +111,7 @@ void FEMesh::UpdateLayerSets()
 {
   for (auto layer : {TissueLayer::Epidermis, TissueLayer::Dermis, TissueLayer::Hypodermis})
   {
-    std::vector<std::int32_t> ids;
-    for (std::size_t i = 0; i < elements.size(); ++i)
-      if (elements[i].type != ElementType::Cable && elements[i].layer == layer)
-        ids.push_back(static_cast<std::int32_t>(i));
+    auto ids = SolidElementsOfLayer(layer);
     if (ids.empty())
       elementSets.erase(TissueLayerName(layer));
     else

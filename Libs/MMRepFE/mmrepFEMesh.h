@@ -80,6 +80,8 @@ public:
   std::vector<Landmark> landmarks; // ordered as given (control points keep their order)
 
   std::size_t SolidElementCount() const;
+  // Indices of the solid (non-cable) elements of a layer, in element order.
+  std::vector<std::int32_t> SolidElementsOfLayer(TissueLayer layer) const;
   bool Empty() const { return nodes.empty() || elements.empty(); }
   // Throws std::invalid_argument naming the first problem (node index out of range, set entry
   // out of range, cable/muscle mismatch, non-finite coordinate).
