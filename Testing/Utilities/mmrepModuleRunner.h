@@ -59,7 +59,9 @@ inline ModuleRun RunModuleExecutable(const std::string& module, const std::vecto
   std::string cmd;
   const char* display = std::getenv("DISPLAY");
   if (needsDisplay && (display == nullptr || *display == '\0'))
-    cmd = "xvfb-run -a -s \"-screen 0 2560x1600x24\" "; // room for several 600-px views
+    // Our own auth file: xvfb-run then makes no temporary folder, whose cleanup fails now and then
+    // when two tests run it at once (ctest -j2). The screen leaves room for several 600-px views.
+    cmd = "xvfb-run -a -f " + Quote((dir / "Xauthority").string()) + " -s \"-screen 0 2560x1600x24\" ";
   cmd += Quote(std::string(MMREP_BINARY_DIR) + "/bin/" + module);
   for (const auto& a : args)
     cmd += " " + Quote(a);
