@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # MMRep demo on the bundled real CT: bash Utilities/demo.sh <build-dir> <output-dir>
-# Runs the modules a user would chain and says where the results and pictures are.
+# The README's main command: CT + five control points -> speaker FE face model with muscles, its
+# exports, report and pictures (FaceModelPipeline), then a smile simulated with CalculiX
+# (SimulateMuscleActivation, zygomaticus major left).
 set -euo pipefail
 build="$1"
 out="$2"
 bin="$build/bin"
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 ct="$root/Resources/SampleData/cthead.nrrd"
-mkdir -p "$out"
+points="$root/Resources/SampleData/cthead.ControlPoints.mrk.json"
+mkdir -p "$(dirname "$out")"
 
 # Pictures need an X display; Debian's VTK renders through X11.
 render=()
@@ -18,25 +21,15 @@ step() { echo; echo "== $*"; }
 # line left" is not a failure).
 run() { "$@" | { grep -v '^<' || true; }; }
 
-step "SkinSkullSurfaces: CT -> skin and skull surfaces (+ picture)"
-run "${render[@]}" "$bin/SkinSkullSurfaces" "$ct" "$out/skin.vtp" "$out/skull.vtp" \
-  --skinMask "$out/skin-mask.nrrd" --snapshot "$out/skin-skull.png" \
-  --returnparameterfile "$out/SkinSkullSurfaces.txt"
+step "FaceModelPipeline: CT + control points -> speaker FE face model (surfaces, plane, R, Q, repair, muscles)"
+run "${render[@]}" "$bin/FaceModelPipeline" "$ct" "$points" --outputDirectory "$out"
 
-step "DistanceMap: skin and skull distance maps at 1.5 mm (the paper's resolution)"
-run "$bin/DistanceMap" "$out/skin.vtp" "$out/skin-distance.nrrd" --spacing 1.5
-run "$bin/DistanceMap" "$out/skull.vtp" "$out/skull-distance.nrrd" --spacing 1.5
-
-atlas="$root/Resources/Atlas/FaceAtlas.vtu"
-if [ -f "$atlas" ]; then
-  step "MeshQuality and MeshConvert on the shipped face atlas"
-  run "$bin/MeshQuality" "$atlas" --outputMesh "$out/atlas-quality.vtu"
-  for ext in inp feb msh; do
-    run "$bin/MeshConvert" "$atlas" "$out/atlas.$ext"
-  done
-fi
+step "SimulateMuscleActivation: zygomaticus major (left) contracted, solved with CalculiX"
+run "${render[@]}" "$bin/SimulateMuscleActivation" "$out/model.vtu" "$out/smile.vtu" \
+  --muscles ZygomaticusMajor_L --picture "$out/smile.png" --lipsPicture "$out/smile-lips.png"
 
 echo
 echo "Results in $out:"
 ls -1 "$out" | sed 's/^/  /'
-echo "Picture: $out/skin-skull.png"
+echo "Report: $out/report.md"
+echo "Pictures: $out/model-skin-error.png $out/lips.png $out/muscles.png $out/smile.png $out/smile-lips.png"

@@ -276,6 +276,7 @@ FaceAtlas BuildFaceAtlas(vtkPolyData* skinWorld, vtkPolyData* skullWorld, const 
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> depth(rows * cols, nan);
   std::vector<char> mouth(rows * cols, 0);
+  int shallow = 0;
   for (int i = 0; i < rows; ++i)
     for (int j = 0; j < cols; ++j)
     {
@@ -289,6 +290,8 @@ FaceAtlas BuildFaceAtlas(vtkPolyData* skinWorld, vtkPolyData* skullWorld, const 
       const auto hit = bone.First(outer[q], outer[q] + options.maxBoneDepth * dir[q]);
       if (hit)
         depth[q] = (*hit - outer[q]).norm();
+      if (depth[q] < options.minThickness)
+        ++shallow; // depth stays a measurement for the outlier medians; rejected below
     }
   // Outliers: depths far from the median of their 5x5 neighbourhood.
   std::vector<double> accepted = depth;
@@ -308,7 +311,8 @@ FaceAtlas BuildFaceAtlas(vtkPolyData* skinWorld, vtkPolyData* skullWorld, const 
             n.push_back(depth[ii * cols + jj]);
         }
       std::nth_element(n.begin(), n.begin() + n.size() / 2, n.end());
-      if (n.size() < 9 || std::abs(depth[q] - n[n.size() / 2]) > options.outlierDepth)
+      if (n.size() < 9 || std::abs(depth[q] - n[n.size() / 2]) > options.outlierDepth ||
+          depth[q] < options.minThickness)
       {
         accepted[q] = nan;
         ++outliers;
@@ -347,8 +351,12 @@ FaceAtlas BuildFaceAtlas(vtkPolyData* skinWorld, vtkPolyData* skullWorld, const 
           }
         thickness[q] = sum / n;
       }
+  for (double& t : thickness)
+    t = std::max(t, options.minThickness);
   atlas.log.push_back(Format("bone followed at %.0f of %.0f inner nodes (left half); %.0f depth outliers ignored",
                              boneCount, rows * cols, outliers));
+  atlas.log.push_back(Format("%.0f bone crossings shallower than %.1f mm ignored; columns at least %.1f mm thick",
+                             shallow, options.minThickness, options.minThickness));
   report(0.5);
 
   // --- Left-half nodes.
@@ -515,6 +523,28 @@ FaceAtlas BuildFaceAtlas(vtkPolyData* skinWorld, vtkPolyData* skullWorld, const 
     const auto q = quality::SummarizeScaledJacobian(mesh, options.qualityThreshold, qo);
     atlas.log.push_back(Format("surface nodes projected (largest move %.3f mm): scaled Jacobian min %.3f, mean %.3f", worst,
                                q.min, q.mean));
+    // A mid-sagittal inner node is the closest bone point pushed back onto the plane: where the
+    // bone meets the plane obliquely that leaves the bone. Such a node is not on the skull but
+    // on the offset part of the inner surface (set `inner`), so `skull` means "on the bone".
+    int demoted = 0;
+    for (int i = 0; i < rows; ++i)
+    {
+      if (!onBone[i * cols])
+        continue;
+      const auto n = static_cast<std::int32_t>(grid.Node(i, 0, 3, 0));
+      double x[3] = {mesh.nodes[n].x(), mesh.nodes[n].y(), mesh.nodes[n].z()}, closest[3], d2;
+      vtkIdType cell;
+      int sub;
+      skullLoc->FindClosestPoint(x, closest, cell, sub, d2);
+      if (std::sqrt(d2) <= 0.1)
+        continue;
+      onBone[i * cols] = 0;
+      skullSet.erase(std::find(skullSet.begin(), skullSet.end(), n));
+      innerSet.insert(std::upper_bound(innerSet.begin(), innerSet.end(), n), n);
+      ++demoted;
+    }
+    atlas.log.push_back(Format("%.0f mid-sagittal inner nodes farther than 0.1 mm from the bone moved from set skull to inner",
+                               demoted));
   }
 
   // --- Landmarks (world), muscles.

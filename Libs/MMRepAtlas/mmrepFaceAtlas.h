@@ -14,8 +14,9 @@
 //     on the plane it is kept in the plane.
 //  4. Inner node = first bone crossing along that direction within `maxBoneDepth` mm (node set
 //     `skull`), except over the mouth (teeth and metal streaks, lips not attached to bone) and
-//     where the depth jumps by more than `outlierDepth` mm from its neighbourhood's median; there
-//     the thickness is the harmonic interpolation of the accepted bone depths (node set `inner`).
+//     where the depth jumps by more than `outlierDepth` mm from its neighbourhood's median or is
+//     below `minThickness`; there the thickness is the harmonic interpolation of the accepted bone
+//     depths (node set `inner`), and no column is thinner than `minThickness`.
 //  5. Levels split the thickness in epidermis : dermis : hypodermis = `layerRatios`.
 //  6. Mirror: the right half is the mirror image, nodes on the plane are shared.
 //  7. Quality: smoothing of the inner nodes that are not on bone and, when needed, RepairMesh
@@ -50,6 +51,10 @@ struct FaceAtlasOptions
   double browMargin = 30.0;    // mm above the nasion (above the eyebrows)
   double chinMargin = 12.0;    // mm below the pogonion (below the chin)
   double maxBoneDepth = 20.0;  // mm: bone farther under the skin is not followed
+  // mm: bone nearer the skin is not followed either, and no column is thinner. Facial soft tissue
+  // is 3 mm or more almost everywhere (forensic depth tables); shallower "bone" crossings are metal
+  // streaks or the nasal rim, and columns thinner than this invert under any registration.
+  double minThickness = 3.0;
   double outlierDepth = 3.0;   // mm: bone depths this far from the local median are ignored
   double normalBlend = 0.5;    // weight of the smoothed skin normal in the through-thickness direction
   std::array<double, 3> layerRatios{0.15, 0.30, 0.55}; // epidermis, dermis, hypodermis

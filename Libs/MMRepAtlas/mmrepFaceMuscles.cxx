@@ -1,7 +1,9 @@
 #include "mmrepFaceMuscles.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 
 namespace mmrep
 {
@@ -91,6 +93,9 @@ void AddFaceMuscles(FEMesh& mesh, const FaceGrid& grid, const FaceFrame& frame, 
                     double spacing)
 {
   auto& midsagittal = mesh.nodeSets["midsagittal"];
+  // Tracks that meet at one point (the modiolus at the mouth corner) share its node: FE programs
+  // (Gmsh's check among them) refuse coincident nodes.
+  std::map<std::array<double, 3>, std::int32_t> muscleNodeAt;
   for (const auto& rule : rules)
   {
     // Dense samples of the control polyline in (theta, phi, depth), then equal arc-length points.
@@ -141,12 +146,17 @@ void AddFaceMuscles(FEMesh& mesh, const FaceGrid& grid, const FaceFrame& frame, 
             local.x() = 0;
           if (side == 1)
             local.x() = -local.x();
-          node = static_cast<std::int32_t>(mesh.nodes.size());
-          mesh.nodes.push_back(frame.ToWorld(local));
+          const Eigen::Vector3d world = frame.ToWorld(local);
+          const auto [at, added] =
+            muscleNodeAt.emplace(std::array<double, 3>{world.x(), world.y(), world.z()}, static_cast<std::int32_t>(mesh.nodes.size()));
+          node = at->second;
+          if (added)
+            mesh.nodes.push_back(world);
           if (onPlane)
           {
             sharedFirst = node;
-            midsagittal.push_back(node);
+            if (added)
+              midsagittal.push_back(node);
           }
         }
         muscle.nodes.push_back(node);

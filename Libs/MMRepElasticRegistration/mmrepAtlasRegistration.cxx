@@ -10,6 +10,8 @@
 #include <vtkStaticCellLocator.h>
 
 #include <algorithm>
+#include <array>
+#include <functional>
 #include <chrono>
 #include <cmath>
 #include <set>
@@ -21,6 +23,35 @@ namespace mmrep
 
 namespace
 {
+// Mesh guard: every node of a hexahedron not yet tracked becomes a passive point, and the
+// hexahedra are given over point indices (mmrepElasticOptimizer.h says why).
+void AddMeshGuard(const FEMesh& mesh, const std::vector<std::int32_t>& trackedNodes,
+                  const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& toFrame, ElasticProblem& problem)
+{
+  std::vector<int> pointOf(mesh.nodes.size(), -1);
+  for (std::size_t k = 0; k < trackedNodes.size(); ++k)
+    if (pointOf[static_cast<std::size_t>(trackedNodes[k])] < 0)
+      pointOf[static_cast<std::size_t>(trackedNodes[k])] = static_cast<int>(k);
+  for (const auto& e : mesh.elements)
+  {
+    if (e.type != ElementType::Hexahedron)
+      continue;
+    std::array<int, 8> h{};
+    for (std::size_t c = 0; c < 8; ++c)
+    {
+      const auto v = static_cast<std::size_t>(e.nodes[c]);
+      if (pointOf[v] < 0)
+      {
+        pointOf[v] = static_cast<int>(problem.points.size());
+        problem.points.push_back(toFrame(mesh.nodes[v]));
+        problem.pointMap.push_back(-1);
+      }
+      h[c] = pointOf[v];
+    }
+    problem.hexahedra.push_back(h);
+  }
+}
+
 using Clock = std::chrono::steady_clock;
 double Since(Clock::time_point t0)
 {
@@ -84,6 +115,7 @@ void ControlErrors(const FEMesh& mesh, const std::vector<Eigen::Vector3d>& targe
                    std::vector<double>* all = nullptr)
 {
   stage.controlMean = stage.controlMax = 0;
+  stage.controlMeasured = true;
   if (all)
     all->clear();
   for (std::size_t i = 0; i < targets.size(); ++i)
@@ -105,6 +137,26 @@ void SurfaceErrors(const FEMesh& mesh, const std::vector<std::int32_t>& skin, co
     stage.skull = MeasureSurfaceError(mesh.nodes, skull, skullSurface);
   if (!lips.empty())
     stage.lips = MeasureSurfaceError(mesh.nodes, lips, skinSurface);
+}
+
+// Signed map when asked and possible (closed surface), unsigned otherwise: any failure of the
+// signed computation (open or non-manifold surface) retries unsigned, whose own errors propagate.
+FloatImage::Pointer DistanceMap(vtkPolyData* surface, SurfaceDistanceMapOptions o, bool trySigned,
+                                const std::function<void(double)>& progress)
+{
+  if (trySigned)
+  {
+    o.signedDistance = true;
+    try
+    {
+      return ComputeSurfaceDistanceMap(surface, o, progress);
+    }
+    catch (const std::runtime_error&)
+    {
+    }
+  }
+  o.signedDistance = false;
+  return ComputeSurfaceDistanceMap(surface, o, progress);
 }
 
 nlohmann::json StatsJson(const SurfaceErrorStatistics& s)
@@ -201,6 +253,92 @@ std::string RegistrationReport::ToJson() const
                    {"weight", i < controlWeights.size() ? controlWeights[i] : 0.0}});
   j["controlPoints"] = cps;
   return j.dump(2);
+}
+
+namespace
+{
+std::string Cell(double v, bool defined, int precision = 3)
+{
+  if (!defined)
+    return "—";
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%.*f", precision, v);
+  return buf;
+}
+
+std::string StatsCells(const SurfaceErrorStatistics& s)
+{
+  const bool d = s.count > 0;
+  return Cell(s.mean, d) + " | " + Cell(s.max, d) + " | " + Cell(s.sigma, d);
+}
+} // namespace
+
+std::string RegistrationReport::ToMarkdown(const std::string& title) const
+{
+  std::ostringstream md;
+  md << "## " << title << "\n\n"
+     << "Errors in mm: distance of the registered atlas nodes to the subject's triangle surfaces (skin, skull; "
+        "lips = skin nodes of the `lips` set), control points = distance to the subject's points of the same name.\n\n"
+     << "| stage | skin mean | skin max | skin σ | skull mean | skull max | skull σ | lips mean | lips max | lips σ "
+        "| control mean | control max | steps | time (s) |\n"
+     << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const auto& s : stages)
+  {
+    std::size_t steps = 0;
+    for (auto n : s.stepsPerLevel)
+      steps += n;
+    const bool hasControl = s.controlMeasured;
+    md << "| " << s.name << " | " << StatsCells(s.skin) << " | " << StatsCells(s.skull) << " | " << StatsCells(s.lips)
+       << " | " << Cell(s.controlMean, hasControl) << " | " << Cell(s.controlMax, hasControl) << " | "
+       << (s.stepsPerLevel.empty() ? std::string("—") : std::to_string(steps)) << " | " << Cell(s.seconds, true, 2)
+       << " |\n";
+  }
+  if (!controlNames.empty())
+  {
+    md << "\n| control point | error (mm) | final weight |\n|---|---:|---:|\n";
+    for (std::size_t i = 0; i < controlNames.size(); ++i)
+      md << "| " << controlNames[i] << " | " << Cell(i < controlErrors.size() ? controlErrors[i] : 0, i < controlErrors.size())
+         << " | " << Cell(i < controlWeights.size() ? controlWeights[i] : 0, i < controlWeights.size(), 1) << " |\n";
+  }
+  return md.str();
+}
+
+RegistrationReport LocalRefinementResult::Report() const
+{
+  RegistrationReport r;
+  RegistrationStage b = before, a = after;
+  b.name = "R (before refinement)";
+  a.name = "Q∘R";
+  b.controlMeasured = a.controlMeasured = false; // RefineLocally has no subject control points
+  r.stages = {b, a};
+  return r;
+}
+
+void AddRefinementStage(RegistrationReport& report, const LocalRefinementResult& refinement,
+                        const std::vector<Landmark>& subjectControlPoints)
+{
+  RegistrationStage s = refinement.after;
+  s.name = "refinement (Q∘R)";
+  s.controlMean = s.controlMax = 0;
+  s.controlMeasured = !subjectControlPoints.empty();
+  if (s.controlMeasured)
+  {
+    std::vector<double> errors;
+    for (const auto& name : report.controlNames)
+    {
+      const auto l = std::find_if(refinement.mesh.landmarks.begin(), refinement.mesh.landmarks.end(),
+                                  [&](const Landmark& x) { return x.name == name; });
+      const auto t = std::find_if(subjectControlPoints.begin(), subjectControlPoints.end(),
+                                  [&](const Landmark& x) { return x.name == name; });
+      if (l == refinement.mesh.landmarks.end() || t == subjectControlPoints.end())
+        throw std::invalid_argument("refinement report: control point '" + name + "' is missing");
+      errors.push_back((l->position - t->position).norm());
+      s.controlMean += errors.back() / static_cast<double>(report.controlNames.size());
+      s.controlMax = std::max(s.controlMax, errors.back());
+    }
+    report.controlErrors = errors;
+  }
+  report.stages.push_back(s);
 }
 
 AtlasRegistrationResult RegisterAtlas(const FEMesh& atlas, const Plane& atlasPlane, const SubjectData& subject,
@@ -308,9 +446,9 @@ AtlasRegistrationResult RegisterAtlas(const FEMesh& atlas, const Plane& atlasPla
   mapOptions.margin = options.mapMargin;
   FloatImage::Pointer skinMap = subject.skinMap, skullMap = subject.skullMap;
   if (!skinMap)
-    skinMap = ComputeSurfaceDistanceMap(subject.skin, mapOptions, [&](double f) { progress(0.02 + 0.1 * f); });
+    skinMap = DistanceMap(subject.skin, mapOptions, options.signedMaps, [&](double f) { progress(0.02 + 0.1 * f); });
   if (!skullMap)
-    skullMap = ComputeSurfaceDistanceMap(subject.skull, mapOptions, [&](double f) { progress(0.12 + 0.1 * f); });
+    skullMap = DistanceMap(subject.skull, mapOptions, options.signedMaps, [&](double f) { progress(0.12 + 0.1 * f); });
   RegistrationStage mapStage;
   mapStage.name = "distance maps";
   mapStage.seconds = Since(tMaps);
@@ -330,6 +468,12 @@ AtlasRegistrationResult RegisterAtlas(const FEMesh& atlas, const Plane& atlasPla
   {
     problem.points.push_back(frameOf(atlas.nodes[static_cast<std::size_t>(id)]));
     problem.pointMap.push_back(1);
+  }
+  if (options.elementQualityFloor >= 0)
+  {
+    std::vector<std::int32_t> tracked(skinIds.begin(), skinIds.end());
+    tracked.insert(tracked.end(), skullIds.begin(), skullIds.end());
+    AddMeshGuard(atlas, tracked, frameOf, problem);
   }
   for (std::size_t i = 0; i < sourceCP.size(); ++i)
   {
@@ -367,6 +511,7 @@ AtlasRegistrationResult RegisterAtlas(const FEMesh& atlas, const Plane& atlasPla
   opt.symmetric = options.symmetric;
   opt.controlPointTolerance = options.controlPointTolerance;
   opt.controlPointWeightCap = options.controlPointWeightCap;
+  opt.elementQualityFloor = options.elementQualityFloor;
   opt.progress = [&](double f) { progress(0.22 + 0.73 * f); };
   RegistrationStage elastic;
   elastic.name = "elastic";
@@ -448,10 +593,11 @@ LocalRefinementResult RefineLocally(const FEMesh& registered, vtkPolyData* skin,
     whi = whi.cwiseMax(w);
   }
   mapOptions.region = {wlo.x(), whi.x(), wlo.y(), whi.y(), wlo.z(), whi.z()};
-  auto map = ComputeSurfaceDistanceMap(skin, mapOptions, [&](double f) { progress(0.3 * f); });
+  auto map = DistanceMap(skin, mapOptions, options.signedMap, [&](double f) { progress(0.3 * f); });
 
   ElasticProblem problem;
   problem.maps.emplace_back(map.GetPointer());
+  std::vector<std::int32_t> tracked;
   for (auto id : skinIds)
   {
     const Eigen::Vector3d f = transform.ToFrame(registered.nodes[static_cast<std::size_t>(id)]);
@@ -459,7 +605,31 @@ LocalRefinementResult RefineLocally(const FEMesh& registered, vtkPolyData* skin,
     {
       problem.points.push_back(f);
       problem.pointMap.push_back(0);
+      tracked.push_back(id);
     }
+  }
+  if (options.elementQualityFloor >= 0)
+    AddMeshGuard(registered, tracked, [&](const Eigen::Vector3d& x) { return transform.ToFrame(x); }, problem);
+  auto inBox = [&](const Eigen::Vector3d& f) {
+    return (f.array() > result.boxMin.array()).all() && (f.array() < result.boxMax.array()).all();
+  };
+  if (options.pinWeight > 0)
+  {
+    std::vector<Eigen::Vector3d> pins;
+    const auto skull = registered.nodeSets.find(options.skullSet);
+    if (skull != registered.nodeSets.end())
+      for (auto id : skull->second)
+        if (id >= 0 && static_cast<std::size_t>(id) < registered.nodes.size())
+          pins.push_back(transform.ToFrame(registered.nodes[static_cast<std::size_t>(id)]));
+    for (const auto& l : registered.landmarks)
+      pins.push_back(transform.ToFrame(l.position));
+    for (const auto& f : pins)
+      if (inBox(f))
+      {
+        problem.controlSources.push_back(f);
+        problem.controlTargets.push_back(f);
+        problem.controlWeights.push_back(options.pinWeight);
+      }
   }
   problem.boxMin = result.boxMin;
   problem.boxMax = result.boxMax;
@@ -477,6 +647,7 @@ LocalRefinementResult RefineLocally(const FEMesh& registered, vtkPolyData* skin,
   opt.tolerance = options.tolerance;
   opt.symmetric = options.symmetric;
   opt.fixBoundary = true;
+  opt.elementQualityFloor = options.elementQualityFloor;
   opt.progress = [&](double f) { progress(0.3 + 0.65 * f); };
   result.after.energyBefore = ElasticEnergy(transform, problem);
   const auto stats = OptimizeElastic(transform, problem, opt);

@@ -29,6 +29,10 @@ struct AtlasRegistrationOptions
   // cell is at least twice the distance-map spacing (finer cells cannot see more of the map).
   int finestLevel = 0;
   double mapSpacing = 1.5;    // mm, distance maps of the subject skin and skull
+  // Signed maps (negative inside) when a surface is closed: the energy uses |d| either way, but
+  // trilinear interpolation of a signed map crosses zero at the surface, while that of |d| rounds
+  // off its V by up to about a quarter of the spacing. Open surfaces fall back to unsigned maps.
+  bool signedMaps = true;
   double mapMargin = 15.0;    // mm, around the subject surfaces
   double gridMargin = 0.10;   // box of the aligned atlas points grown by this fraction per side
   double stepSafety = 0.4;    // |δ| ≤ stepSafety / max|∇φ|
@@ -38,6 +42,9 @@ struct AtlasRegistrationOptions
   double controlPointTolerance = 0.5;  // mm: W_i doubles while the control point is farther
   double controlPointWeightCap = 1000; // upper bound of W_i
   bool symmetric = true;      // mirrored steps about the subject plane (needs a symmetric atlas)
+  // Mesh guard (mmrepElasticOptimizer.h): every atlas node is moved along and no step may bring a
+  // hexahedron below this scaled Jacobian (or lower one already below). Negative: no guard.
+  double elementQualityFloor = 0.3;
   // Node sets of the atlas: attracted to the subject skin / skull; `lips` is only reported.
   std::string skinSet = "skin", skullSet = "skull", lipsSet = "lips";
   std::function<void(double)> progress; // fraction in [0, 1]
@@ -65,6 +72,7 @@ struct RegistrationStage
   double seconds = 0;
   SurfaceErrorStatistics skin, skull, lips;
   double controlMean = 0, controlMax = 0; // mm
+  bool controlMeasured = false;           // the control-point errors above were measured
   std::vector<std::size_t> stepsPerLevel;
   std::vector<int> sweepsPerLevel;
   double energyBefore = 0, energyAfter = 0;
@@ -77,6 +85,10 @@ struct RegistrationReport
   std::vector<double> controlErrors;  // mm, after the last stage
   std::vector<double> controlWeights; // final W_i
   std::string ToJson() const;         // pretty-printed JSON
+  // Markdown tables like the paper's Tables 1–2: per stage, skin / skull / lips errors (mean, max,
+  // σ, mm, to the subject's triangles), control-point mean / max, steps and time; then the control
+  // points one by one. A statistic that was not measured at a stage (count 0) shows as "—".
+  std::string ToMarkdown(const std::string& title = "Registration report") const;
   const RegistrationStage& Last() const { return stages.back(); }
 };
 
@@ -95,6 +107,7 @@ AtlasRegistrationResult RegisterAtlas(const FEMesh& atlas, const Plane& atlasPla
 struct LocalRefinementOptions
 {
   double spacing = 0.5;  // mm, fine skin distance map over the refinement box
+  bool signedMap = true; // signed when the skin is closed (see AtlasRegistrationOptions::signedMaps)
   // Finest level of Q's grid; 0: automatic (smallest cell ≥ 2 × spacing).
   int finestLevel = 0;
   double boxMargin = 0.25;   // the region set's bounding box grown by this fraction per side…
@@ -105,8 +118,15 @@ struct LocalRefinementOptions
   // Region to refine and the nodes attracted: skin nodes inside the box (the region's own skin
   // nodes and their neighbours, which Q moves too and must stay on the skin).
   std::string regionSet = "lips", skinSet = "skin";
+  // Pins: nodes of `skullSet` and the mesh's landmarks (control points) inside the box are held
+  // where R put them (energy term pinWeight × displacement, raised like a control point's weight
+  // while one is off by more than 0.5 mm); without them Q drags the skull nodes under the lips and
+  // the lip control points along with the skin. pinWeight 0 disables.
+  std::string skullSet = "skull";
+  double pinWeight = 1.0;
   bool symmetric = false; // mirrored steps about `plane` (keeps a symmetric mesh symmetric)
   Plane plane;
+  double elementQualityFloor = 0.3; // mesh guard, as AtlasRegistrationOptions; negative: none
   std::function<void(double)> progress;
 };
 
@@ -116,7 +136,14 @@ struct LocalRefinementResult
   FEMesh mesh;
   RegistrationStage before, after; // errors of the region's skin nodes in `lips`, all skin in `skin`
   Eigen::Vector3d boxMin = Eigen::Vector3d::Zero(), boxMax = Eigen::Vector3d::Zero(); // frame coords
+  // Stages "R (before refinement)" and "Q∘R", lips = the region's skin nodes (for ToMarkdown/ToJson).
+  RegistrationReport Report() const;
 };
+
+// Appends Q's stage to R's report: "refinement" with the lips and skin errors after Q∘R, and, when
+// `subjectControlPoints` are given, the control-point errors of the refined mesh's landmarks.
+void AddRefinementStage(RegistrationReport& report, const LocalRefinementResult& refinement,
+                        const std::vector<Landmark>& subjectControlPoints = {});
 
 LocalRefinementResult RefineLocally(const FEMesh& registered, vtkPolyData* skin,
                                     const LocalRefinementOptions& options = {});

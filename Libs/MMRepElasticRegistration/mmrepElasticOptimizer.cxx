@@ -1,5 +1,7 @@
 #include "mmrepElasticOptimizer.h"
 
+#include "mmrepHexQuality.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -19,6 +21,76 @@ public:
   Engine(ElasticTransform& t, ElasticProblem& p, const ElasticOptimizerOptions& o)
     : transform_(t), problem_(p), options_(o), frameToWorld_(t.frameRotation.transpose())
   {
+    // Hexahedra of each point (CSR) and their current quality, for the mesh guard.
+    const std::size_t n = problem_.points.size();
+    hexStart_.assign(n + 1, 0);
+    for (const auto& h : problem_.hexahedra)
+      for (int v : h)
+        ++hexStart_[static_cast<std::size_t>(v) + 1];
+    for (std::size_t i = 0; i < n; ++i)
+      hexStart_[i + 1] += hexStart_[i];
+    hexOfPoint_.resize(hexStart_[n]);
+    std::vector<std::size_t> fill(hexStart_.begin(), hexStart_.end() - 1);
+    for (std::size_t h = 0; h < problem_.hexahedra.size(); ++h)
+      for (int v : problem_.hexahedra[h])
+        hexOfPoint_[fill[static_cast<std::size_t>(v)]++] = static_cast<int>(h);
+    hexQuality_.resize(problem_.hexahedra.size());
+    for (std::size_t h = 0; h < problem_.hexahedra.size(); ++h)
+      hexQuality_[h] = HexQuality(h, nullptr);
+    hexStamp_.assign(problem_.hexahedra.size(), 0);
+    trialSlot_.assign(n, -1);
+  }
+
+  ElasticOptimizerStats stats_;
+
+  // Scaled Jacobian of hexahedron h; `moved` (slot per point, -1 = unmoved) gives trial positions.
+  double HexQuality(std::size_t h, const std::vector<Eigen::Vector3d>* moved) const
+  {
+    quality::HexNodes nodes;
+    for (int c = 0; c < 8; ++c)
+    {
+      const auto v = static_cast<std::size_t>(problem_.hexahedra[h][static_cast<std::size_t>(c)]);
+      nodes[static_cast<std::size_t>(c)] =
+        moved && trialSlot_[v] >= 0 ? (*moved)[static_cast<std::size_t>(trialSlot_[v])] : problem_.points[v];
+    }
+    return quality::HexScaledJacobian(nodes);
+  }
+
+  // Mesh guard for a step moving the points `ids` to `moved`: every hexahedron touched keeps
+  // min(floor, its quality before). On success the touched hexahedra's qualities are updated.
+  bool GuardAccepts(const std::vector<int>& ids, const std::vector<Eigen::Vector3d>& moved)
+  {
+    if (problem_.hexahedra.empty())
+      return true;
+    ++stamp_;
+    touched_.clear();
+    for (std::size_t j = 0; j < ids.size(); ++j)
+      if (static_cast<std::size_t>(ids[j]) < problem_.points.size())
+        trialSlot_[static_cast<std::size_t>(ids[j])] = static_cast<int>(j);
+    bool ok = true;
+    for (std::size_t j = 0; j < ids.size() && ok; ++j)
+    {
+      const auto k = static_cast<std::size_t>(ids[j]);
+      if (k >= problem_.points.size())
+        continue;
+      for (std::size_t a = hexStart_[k]; a < hexStart_[k + 1] && ok; ++a)
+      {
+        const auto h = static_cast<std::size_t>(hexOfPoint_[a]);
+        if (hexStamp_[h] == stamp_)
+          continue;
+        hexStamp_[h] = stamp_;
+        const double q = HexQuality(h, &moved);
+        ok = q >= std::min(options_.elementQualityFloor, hexQuality_[h]);
+        touched_.emplace_back(h, q);
+      }
+    }
+    for (int k : ids)
+      if (static_cast<std::size_t>(k) < problem_.points.size())
+        trialSlot_[static_cast<std::size_t>(k)] = -1;
+    if (ok)
+      for (const auto& [h, q] : touched_)
+        hexQuality_[h] = q;
+    return ok;
   }
 
   std::size_t Count() const { return problem_.points.size() + problem_.controlSources.size(); }
@@ -32,12 +104,21 @@ public:
   {
     if (k < problem_.points.size())
     {
+      if (problem_.pointMap[k] < 0)
+      {
+        if (g)
+          g->setZero();
+        return 0.0;
+      }
       Eigen::Vector3d gw;
       const double v =
         problem_.maps[static_cast<std::size_t>(problem_.pointMap[k])].Value(transform_.ToWorld(p), g ? &gw : nullptr);
+      // |d|: a signed map (negative inside) gives the same energy as an unsigned one, but its
+      // trilinear interpolation crosses zero at the surface instead of rounding off the V of |d|.
+      const double sign = v < 0 ? -1.0 : 1.0;
       if (g)
-        *g = transform_.frameRotation * gw;
-      return v;
+        *g = sign * (transform_.frameRotation * gw);
+      return sign * v;
     }
     const std::size_t i = k - problem_.points.size();
     const Eigen::Vector3d d = p - problem_.controlTargets[i];
@@ -182,6 +263,7 @@ public:
     Eigen::Vector3d g = Eigen::Vector3d::Zero();
     double e0 = 0;
     active_.clear();
+    passive_.clear();
     for (int k : gathered_)
     {
       const Eigen::Vector3d& p = Position(static_cast<std::size_t>(k));
@@ -189,6 +271,11 @@ public:
       const double f2 = step.mirrored ? ElasticTransform::Bump(p, mirrorNode, level_->h) : 0.0;
       if (f1 == 0.0 && f2 == 0.0)
         continue;
+      if (IsPassive(static_cast<std::size_t>(k)))
+      {
+        passive_.push_back(k); // no energy: moved only for the mesh guard
+        continue;
+      }
       Eigen::Vector3d ge;
       e0 += Term(static_cast<std::size_t>(k), p, &ge);
       g += f1 * ge;
@@ -239,17 +326,53 @@ public:
         s = sHalf;
         movedA_.swap(movedB_);
       }
-      for (std::size_t j = 0; j < active_.size(); ++j)
-        Move(static_cast<std::size_t>(active_[j]), movedA_[j]);
+      // Mesh guard: shorten the step while it would spoil an element, as long as it still helps.
+      for (int shorten = 0;; ++shorten)
+      {
+        AppendPassive(s, movedA_);
+        if (GuardAccepts(allIds_, movedA_))
+          break;
+        if (shorten == 4)
+        {
+          ++stats_.droppedSteps;
+          return false;
+        }
+        ++stats_.guardedSteps;
+        const double a = 0.5 * s.delta.norm();
+        auto [eShort, sShort] = trial(a, movedA_);
+        if (!(eShort < e0))
+        {
+          ++stats_.droppedSteps;
+          return false;
+        }
+        s = sShort;
+      }
+      for (std::size_t j = 0; j < allIds_.size(); ++j)
+        Move(static_cast<std::size_t>(allIds_[j]), movedA_[j]);
       level_->steps.push_back(s);
       return true;
     }
     return false;
   }
 
+  bool IsPassive(std::size_t k) const { return k < problem_.points.size() && problem_.pointMap[k] < 0; }
+
+  // movedA_ holds the active points' trial positions; append the passive points' (same step) and
+  // list every moved point in allIds_, same order.
+  void AppendPassive(const ElasticStep& s, std::vector<Eigen::Vector3d>& moved)
+  {
+    moved.resize(active_.size());
+    allIds_ = active_;
+    for (int k : passive_)
+    {
+      moved.push_back(ElasticTransform::ApplyStep(s, level_->h, Position(static_cast<std::size_t>(k))));
+      allIds_.push_back(k);
+    }
+  }
+
   ElasticOptimizerStats Run()
   {
-    ElasticOptimizerStats stats;
+    ElasticOptimizerStats& stats = stats_;
     if (options_.firstLevel < 1 || options_.finestLevel < options_.firstLevel || options_.finestLevel > 10)
       throw std::invalid_argument("elastic registration: levels must satisfy 1 <= first <= finest <= 10");
     if (!(options_.stepSafety > 0 && options_.stepSafety < 1))
@@ -307,7 +430,15 @@ private:
   long long dim_ = 0;
   std::unordered_map<long long, std::vector<int>> cells_;
   std::vector<long long> cellOf_;
-  std::vector<int> gathered_, active_;
+  std::vector<int> gathered_, active_, passive_, allIds_;
+  // Mesh guard.
+  std::vector<std::size_t> hexStart_;
+  std::vector<int> hexOfPoint_;
+  std::vector<double> hexQuality_;
+  std::vector<unsigned> hexStamp_;
+  unsigned stamp_ = 0;
+  std::vector<int> trialSlot_;
+  std::vector<std::pair<std::size_t, double>> touched_;
   std::vector<Eigen::Vector3d> movedA_, movedB_;
 };
 } // namespace
@@ -318,8 +449,12 @@ ElasticOptimizerStats OptimizeElastic(ElasticTransform& transform, ElasticProble
   if (problem.pointMap.size() != problem.points.size())
     throw std::invalid_argument("elastic registration: one map index per point is required");
   for (int m : problem.pointMap)
-    if (m < 0 || static_cast<std::size_t>(m) >= problem.maps.size())
+    if (m >= 0 && static_cast<std::size_t>(m) >= problem.maps.size())
       throw std::invalid_argument("elastic registration: a point refers to a missing distance map");
+  for (const auto& h : problem.hexahedra)
+    for (int v : h)
+      if (v < 0 || static_cast<std::size_t>(v) >= problem.points.size())
+        throw std::invalid_argument("elastic registration: a guarded hexahedron refers to a missing point");
   if (problem.controlTargets.size() != problem.controlSources.size() ||
       problem.controlWeights.size() != problem.controlSources.size())
     throw std::invalid_argument("elastic registration: control sources, targets and weights differ in number");
@@ -333,7 +468,8 @@ double ElasticEnergy(const ElasticTransform& transform, const ElasticProblem& pr
 {
   double e = 0;
   for (std::size_t k = 0; k < problem.points.size(); ++k)
-    e += problem.maps[static_cast<std::size_t>(problem.pointMap[k])].Value(transform.ToWorld(problem.points[k]));
+    if (problem.pointMap[k] >= 0)
+      e += std::abs(problem.maps[static_cast<std::size_t>(problem.pointMap[k])].Value(transform.ToWorld(problem.points[k])));
   for (std::size_t i = 0; i < problem.controlSources.size(); ++i)
     e += problem.controlWeights[i] * (problem.controlSources[i] - problem.controlTargets[i]).norm();
   return e;

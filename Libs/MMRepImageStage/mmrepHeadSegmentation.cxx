@@ -6,7 +6,9 @@
 #include <itkConnectedComponentImageFilter.h>
 #include <itkRelabelComponentImageFilter.h>
 
+#include <array>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -297,6 +299,34 @@ CTImage::Pointer MaskedIntensities(const CTImage* ct, const MaskImage* mask, dou
   for (std::size_t i = 0; i < n; ++i)
     o[i] = m[i] ? std::max(c[i], inside) : std::min(c[i], outsideV);
   return out;
+}
+
+std::size_t CloseAxialSlits(MaskImage* mask, int maxRun)
+{
+  const unsigned axis = AxialAxis(mask);
+  const auto size = mask->GetLargestPossibleRegion().GetSize();
+  std::array<std::size_t, 3> stride{1, size[0], size[0] * size[1]};
+  unsigned char* data = mask->GetBufferPointer();
+  const unsigned a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+  std::size_t filled = 0;
+  for (std::size_t p = 0; p < size[a1]; ++p)
+    for (std::size_t q = 0; q < size[a2]; ++q)
+    {
+      const std::size_t base = p * stride[a1] + q * stride[a2];
+      std::size_t lastTissue = std::numeric_limits<std::size_t>::max();
+      for (std::size_t k = 0; k < size[axis]; ++k)
+      {
+        if (!data[base + k * stride[axis]])
+          continue;
+        if (lastTissue != std::numeric_limits<std::size_t>::max() && k - lastTissue > 1 &&
+            k - lastTissue - 1 <= static_cast<std::size_t>(maxRun))
+          for (std::size_t g = lastTissue + 1; g < k; ++g, ++filled)
+            data[base + g * stride[axis]] = 1;
+        lastTissue = k;
+      }
+    }
+  mask->Modified();
+  return filled;
 }
 
 } // namespace mmrep

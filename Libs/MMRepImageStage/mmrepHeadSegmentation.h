@@ -44,6 +44,12 @@ unsigned int AxialAxis(const itk::ImageBase<3>* image);
 // then also every background pixel not 4-connected to the border of its slice along `axis`.
 void FillEnclosedBackground(MaskImage* mask, bool axialSlices, unsigned int axis);
 
+// Closes thin horizontal slits of a head mask: background runs of at most `maxRun` voxels along
+// the axial axis with tissue at both ends (the lip slit of a closed mouth, the eyelid slit), so
+// that the skin passes over the slit instead of diving into it (the mouth closed at rest, as the
+// face atlas has it). Returns the number of voxels set.
+std::size_t CloseAxialSlits(MaskImage* mask, int maxRun);
+
 // Binary opening by a Euclidean ball of `radius` voxels (index units), exact: erosion and dilation
 // are thresholds of Saito–Toriwaki distance maps. An opening that would remove everything leaves
 // the mask empty.

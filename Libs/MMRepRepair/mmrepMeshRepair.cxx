@@ -236,27 +236,38 @@ private:
     return box.diagonal().norm();
   }
 
-  // Symmetric input: every node has a mirror node (same surface kind) within 1e-7 of the mesh size.
+  // Symmetric input: every node of a solid element has a mirror node of a solid element (same
+  // surface kind) within 1e-7 of the mesh size. Nodes of no solid element (embedded muscle points,
+  // which may coincide pairwise) never move in the search and are left out.
   void FindMirrorPairs()
   {
     const std::size_t n = mesh_.nodes.size();
     const double tolerance = 1e-7 * std::max(Diagonal(), 1e-300);
+    auto solid = [&](std::size_t i) { return offsets_[i] != offsets_[i + 1]; };
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
-    points->SetNumberOfPoints(static_cast<vtkIdType>(n));
+    std::vector<std::size_t> ids;
     for (std::size_t i = 0; i < n; ++i)
-      points->SetPoint(static_cast<vtkIdType>(i), mesh_.nodes[i].data());
+      if (solid(i))
+      {
+        points->InsertNextPoint(mesh_.nodes[i].data());
+        ids.push_back(i);
+      }
     vtkNew<vtkPolyData> cloud;
     cloud->SetPoints(points);
     vtkNew<vtkStaticPointLocator> locator;
     locator->SetDataSet(cloud);
     locator->BuildLocator();
     std::vector<std::int32_t> partner(n);
-    for (std::size_t i = 0; i < n; ++i)
+    std::iota(partner.begin(), partner.end(), 0);
+    for (const std::size_t i : ids)
     {
       const Point3 mirror = plane_.Mirror(mesh_.nodes[i]);
-      const vtkIdType j = locator->FindClosestPoint(mirror.data());
-      if (j < 0 || (mesh_.nodes[j] - mirror).norm() > tolerance || surface_[j] != surface_[i])
+      const vtkIdType k = locator->FindClosestPoint(mirror.data());
+      if (k < 0)
+        return;
+      const std::size_t j = ids[static_cast<std::size_t>(k)];
+      if ((mesh_.nodes[j] - mirror).norm() > tolerance || surface_[j] != surface_[i])
         return; // not symmetric: nodes move one by one
       partner[i] = static_cast<std::int32_t>(j);
     }
@@ -265,7 +276,7 @@ private:
         return;
     partner_ = std::move(partner);
     pairs_ = true;
-    for (std::size_t i = 0; i < n; ++i)
+    for (const std::size_t i : ids)
       if (partner_[i] == static_cast<std::int32_t>(i))
         onPlane_[i] = 1; // its own mirror: must stay on the plane to stay symmetric
   }

@@ -11,7 +11,9 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <map>
 #include <random>
+#include <sstream>
 
 using namespace mmrep;
 using namespace mmrep::elastictest;
@@ -271,4 +273,57 @@ TEST(ElasticRegistration, BadInputIsRejectedWithAClearMessage)
   {
     EXPECT_NE(std::string(e.what()).find("do not overlap"), std::string::npos) << e.what();
   }
+}
+
+// The Markdown report holds one table row per stage with the same figures as the stages (3
+// decimals), "—" where a stage measured nothing, and one row per control point.
+TEST(ElasticReport, MarkdownTableMatchesTheStages)
+{
+  const auto& d = Data();
+  RegistrationReport report = d.registration.report;
+  AddRefinementStage(report, d.refinement, d.subject.controlPoints);
+  const std::string md = report.ToMarkdown("Synthetic");
+  std::istringstream lines(md);
+  std::map<std::string, std::vector<std::string>> rows;
+  for (std::string line; std::getline(lines, line);)
+  {
+    if (line.size() < 2 || line[0] != '|' || line[1] == '-')
+      continue;
+    std::vector<std::string> cells;
+    std::istringstream cellStream(line.substr(1));
+    for (std::string cell; std::getline(cellStream, cell, '|');)
+      cells.push_back(cell.substr(cell.find_first_not_of(' '), cell.find_last_not_of(' ') - cell.find_first_not_of(' ') + 1));
+    rows[cells[0]] = cells;
+  }
+  auto fmt = [](double v) {
+    char b[32];
+    std::snprintf(b, sizeof(b), "%.3f", v);
+    return std::string(b);
+  };
+  ASSERT_TRUE(rows.count("similarity") && rows.count("elastic") && rows.count("distance maps") &&
+              rows.count("refinement (Q∘R)")) << md;
+  for (const char* name : {"similarity", "elastic"})
+  {
+    const auto& st = *std::find_if(report.stages.begin(), report.stages.end(), [&](const auto& s) { return s.name == name; });
+    const auto& r = rows[name];
+    ASSERT_EQ(r.size(), 14u) << md;
+    EXPECT_EQ(r[1], fmt(st.skin.mean));
+    EXPECT_EQ(r[2], fmt(st.skin.max));
+    EXPECT_EQ(r[3], fmt(st.skin.sigma));
+    EXPECT_EQ(r[4], fmt(st.skull.mean));
+    EXPECT_EQ(r[7], fmt(st.lips.mean));
+    EXPECT_EQ(r[10], fmt(st.controlMean));
+    EXPECT_EQ(r[11], fmt(st.controlMax));
+  }
+  EXPECT_EQ(rows["distance maps"][1], "—");
+  EXPECT_EQ(rows["distance maps"][10], "—");
+  // Refinement row: lips after Q (all lips nodes that are skin nodes), control points recomputed.
+  EXPECT_EQ(rows["refinement (Q∘R)"][7], fmt(d.refinement.after.lips.mean));
+  EXPECT_EQ(rows["refinement (Q∘R)"][8], fmt(d.refinement.after.lips.max));
+  EXPECT_NE(rows["refinement (Q∘R)"][10], "—");
+  for (const auto& name : report.controlNames)
+    EXPECT_TRUE(rows.count(name)) << name;
+  // Q's own report: before / after rows, no control points.
+  const std::string q = d.refinement.Report().ToMarkdown("Q");
+  EXPECT_NE(q.find("| Q∘R | " + fmt(d.refinement.after.skin.mean)), std::string::npos) << q;
 }

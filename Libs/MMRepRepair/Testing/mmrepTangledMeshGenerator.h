@@ -15,11 +15,30 @@
 #include <vtkSmartPointer.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <random>
 #include <vector>
 
 namespace mmrep::testing
 {
+
+// Uniform in [0, 1) and Gaussian numbers from mt19937 bits only, so every platform draws the same.
+class Random
+{
+public:
+  explicit Random(std::uint32_t seed) : engine_(seed) {}
+  double Uniform() { return (engine_() >> 5) * (1.0 / 134217728.0); }
+  double Gaussian()
+  {
+    const double u = 1.0 - Uniform(), v = Uniform();
+    return std::sqrt(-2 * std::log(u)) * std::cos(2 * M_PI * v);
+  }
+  int Integer(int lo, int hi) { return lo + static_cast<int>(Uniform() * (hi - lo + 1)); } // [lo, hi]
+
+private:
+  std::mt19937 engine_;
+};
 
 struct ShellAtlasOptions
 {

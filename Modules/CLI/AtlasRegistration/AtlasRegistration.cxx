@@ -61,6 +61,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
   }
   if (args.Given("report"))
   {
+    CheckExtension(args.String("report"), {".json", ".md"}, "report");
     outputs.push_back(std::make_unique<mmrep::cli::AtomicOutput>(args.String("report")));
     reportOut = outputs.back().get();
   }
@@ -91,6 +92,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
   options.finestLevel = static_cast<int>(args.Int("levels"));
   options.mapSpacing = args.Double("mapSpacing");
   options.controlPointWeight = args.Double("controlPointWeight");
+  options.elementQualityFloor = args.Double("elementQualityFloor");
   options.symmetric = !args.Bool("asymmetric");
   options.progress = [&](double f) { ctx.progress.ReportRange(0.05, 0.9, f); };
   const auto result = mmrep::RegisterAtlas(atlas, atlasPlane, subject, options);
@@ -123,7 +125,10 @@ void Run(mmrep::cli::ModuleContext& ctx)
   if (reportOut)
   {
     std::ofstream f(reportOut->TempPath());
-    f << result.report.ToJson() << "\n";
+    if (mmrep::cli::FileExtension(reportOut->FinalPath()) == ".md")
+      f << result.report.ToMarkdown("Atlas registration (R)");
+    else
+      f << result.report.ToJson() << "\n";
     if (!f)
       throw ModuleError(reportOut->FinalPath() + ": cannot write the report");
   }

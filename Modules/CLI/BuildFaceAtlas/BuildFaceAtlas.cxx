@@ -7,6 +7,7 @@
 #include "mmrepImageIO.h"
 #include "mmrepLandmarkIO.h"
 #include "mmrepMeshQuality.h"
+#include "mmrepFaceModelPictures.h"
 #include "mmrepSnapshot.h"
 #include "mmrepSurfaceExtraction.h"
 #include "mmrepSurfaceIO.h"
@@ -142,8 +143,9 @@ void WritePictures(const mmrep::FaceAtlas& atlas, const std::string& folder)
     view.views = {mmrep::View::Anterior, mmrep::View::Left};
     view.title = "atlas skin mesh, lips nodes (blue), landmarks (green)";
     mmrep::WriteSnapshot({s, w, p, m}, view, png("FaceAtlasLips.png"));
-
   }
+  mmrep::WriteMusclesPicture(mesh, atlas.skinSurface, png("FaceAtlasMuscles.png"),
+                             "atlas muscle tracks, one colour per muscle");
 }
 
 // Closes thin horizontal slits of the head mask: background runs of at most `maxRun` voxels along
@@ -225,6 +227,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
   options.browMargin = args.Double("browMargin");
   options.chinMargin = args.Double("chinMargin");
   options.maxBoneDepth = args.Double("maxBoneDepth");
+  options.minThickness = args.Double("minThickness");
   options.normalBlend = args.Double("normalBlend");
   options.qualityThreshold = args.Double("qualityThreshold");
   const auto ratios = args.Doubles("layerRatios");

@@ -29,8 +29,15 @@ void Run(mmrep::cli::ModuleContext& ctx)
     throw ModuleError(args.String("outputMesh") + ": unknown mesh format '" + ext + "' (use .vtu, .vtk, .inp, .feb or .msh)");
   mmrep::cli::AtomicOutput meshOut(args.String("outputMesh"));
   std::unique_ptr<mmrep::cli::AtomicOutput> reportOut;
+  bool markdown = false;
   if (args.Given("report"))
+  {
+    const auto reportExt = mmrep::cli::FileExtension(args.String("report"));
+    if (reportExt != ".json" && reportExt != ".md")
+      throw ModuleError(args.String("report") + ": unknown report format '" + reportExt + "' (use .json or .md)");
+    markdown = reportExt == ".md";
     reportOut = std::make_unique<mmrep::cli::AtomicOutput>(args.String("report"));
+  }
 
   ctx.progress.Start("Local refinement");
   const auto mesh = mmrep::ReadFEMesh(args.String("registeredMesh"));
@@ -38,6 +45,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
   mmrep::LocalRefinementOptions options;
   options.regionSet = args.String("nodeSet");
   options.spacing = args.Double("spacing");
+  options.elementQualityFloor = args.Double("elementQualityFloor");
   options.finestLevel = static_cast<int>(args.Int("levels"));
   if (args.Given("subjectPlane"))
   {
@@ -65,7 +73,10 @@ void Run(mmrep::cli::ModuleContext& ctx)
                               {"stepsPerLevel", result.after.stepsPerLevel},
                               {"sweepsPerLevel", result.after.sweepsPerLevel}};
     std::ofstream f(reportOut->TempPath());
-    f << j.dump(2) << "\n";
+    if (markdown)
+      f << result.Report().ToMarkdown("Local refinement (Q) of node set '" + options.regionSet + "'");
+    else
+      f << j.dump(2) << "\n";
     if (!f)
       throw ModuleError(reportOut->FinalPath() + ": cannot write the report");
   }

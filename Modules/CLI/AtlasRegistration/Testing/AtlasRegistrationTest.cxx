@@ -109,6 +109,30 @@ TEST(ElasticAtlasRegistrationModule, EstimatesTheSubjectPlaneWhenNotGiven)
   EXPECT_LT(worst, 0.05);
 }
 
+TEST(ElasticAtlasRegistrationModule, WritesAMarkdownReportForMdExtension)
+{
+  ScratchDirectory dir("atlasmd");
+  const auto in = WriteInputs(dir);
+  const auto run = RunModuleExecutable("AtlasRegistration",
+                                       {in.atlas, in.skin, in.skull, in.points, dir / "out.vtu", "--subjectPlane", in.plane,
+                                        "--levels", "2", "--report", dir / "report.md", "--returnparameterfile",
+                                        dir / "v.txt"});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const auto md = mmrep::testing::Slurp(dir / "report.md");
+  const auto values = ReadReturnParameters(dir / "v.txt");
+  char mean[32];
+  std::snprintf(mean, sizeof(mean), "%.3f", std::stod(values.at("skinMeanError")));
+  EXPECT_EQ(md.rfind("## Atlas registration", 0), 0u) << md;
+  EXPECT_NE(md.find("| total | " + std::string(mean) + " |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| LowerLipCenter |"), std::string::npos) << md;
+  // An unknown report extension is refused before anything is written.
+  const auto bad = RunModuleExecutable("AtlasRegistration", {in.atlas, in.skin, in.skull, in.points, dir / "out2.vtu",
+                                                             "--subjectPlane", in.plane, "--report", dir / "r.txt"});
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.err.find("r.txt"), std::string::npos) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out2.vtu"));
+}
+
 TEST(ElasticAtlasRegistrationModule, BadInputGivesOneLineAndNoOutput)
 {
   ScratchDirectory dir("atlasbad");

@@ -49,6 +49,16 @@ TEST(ElasticLocalRefinementModule, RefinesTheLipsAndLeavesTheRestBitIdentical)
   EXPECT_GT(moved, 50u);
   const auto json = nlohmann::json::parse(mmrep::testing::Slurp(dir / "report.json"));
   EXPECT_DOUBLE_EQ(json["after"]["region"]["mean"].get<double>(), after);
+  // Same run with a Markdown report: the Q∘R row holds the region's errors.
+  const auto md = RunModuleExecutable("LocalRefinement", {dir / "registered.vtu", dir / "skin.vtp", dir / "out2.vtu",
+                                                          "--report", dir / "report.md"});
+  ASSERT_EQ(md.exitCode, 0) << md.err;
+  const auto text = mmrep::testing::Slurp(dir / "report.md");
+  char cells[64];
+  std::snprintf(cells, sizeof(cells), "| %.3f | %.3f |", after, std::stod(values.at("lipsMaxAfter")));
+  const auto row = text.find("| Q∘R |");
+  ASSERT_NE(row, std::string::npos) << text;
+  EXPECT_NE(text.substr(row, text.find('\n', row) - row).find(cells), std::string::npos) << text;
 }
 
 TEST(ElasticLocalRefinementModule, BadInputGivesOneLineAndNoOutput)

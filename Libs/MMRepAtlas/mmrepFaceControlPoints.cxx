@@ -1,0 +1,358 @@
+#include "mmrepFaceControlPoints.h"
+
+#include "mmrepFaceAtlas.h"
+
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace mmrep
+{
+namespace
+{
+vtkSmartPointer<vtkPolyData> ToLocal(vtkPolyData* world, const FaceFrame& frame)
+{
+  double m[16];
+  frame.WorldToLocalMatrix(m);
+  auto t = vtkSmartPointer<vtkTransform>::New();
+  t->SetMatrix(m);
+  auto f = vtkSmartPointer<vtkTransformPolyDataFilter>::New();
+  f->SetInputData(world);
+  f->SetTransform(t);
+  f->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  f->Update();
+  vtkSmartPointer<vtkPolyData> out = f->GetOutput();
+  return out;
+}
+
+constexpr double kDeg = M_PI / 180.0;
+
+int NextExtremum(const std::vector<double>& v, int start, int step, bool wantMin, double delta)
+{
+  int best = start;
+  for (int i = start; i >= 0 && i < static_cast<int>(v.size()); i += step)
+  {
+    if (wantMin ? v[i] < v[best] : v[i] > v[best])
+      best = i;
+    if (wantMin ? v[i] > v[best] + delta : v[i] < v[best] - delta)
+      return best;
+  }
+  return -1;
+}
+
+// The atlas's orbit, eye-corner and mouth-corner rules (copied from DetectFaceLandmarks, which
+// does not expose them separately), given the nasion and stomion in `lm`.
+void OrbitAndMouthCorner(const SurfaceRays& skin, const SurfaceRays& bone, const Eigen::Vector3d& centre,
+                         FaceLandmarkSet& lm)
+{
+  // --- Left orbital opening: rays meeting no bone within 25 mm under the skin.
+  const double orbitDepth = 25.0;
+  const double da = 1.0 * kDeg;
+  const double phi0 = lm.nasion.phi - 16 * kDeg, theta0 = 4 * kDeg;
+  const int rows = 22, cols = 57; // phi: nasion -16 .. +5 deg; theta: 4 .. 60 deg
+  std::vector<FacePoint> hits(rows * cols);
+  std::vector<int> open(rows * cols, 0);
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c)
+    {
+      const FacePoint p = SkinHit(skin, centre, theta0 + c * da, phi0 + r * da);
+      const Eigen::Vector3d in = -RayDirection(p.theta, p.phi);
+      hits[r * cols + c] = p;
+      open[r * cols + c] = bone.First(p.local, p.local + orbitDepth * in) ? 0 : 1;
+    }
+  // Components (4-connected), labelled in scan order: deterministic.
+  std::vector<int> label(rows * cols, -1);
+  std::vector<std::vector<int>> comps;
+  for (int s = 0; s < rows * cols; ++s)
+  {
+    if (!open[s] || label[s] >= 0)
+      continue;
+    comps.emplace_back();
+    std::vector<int> stack{s};
+    label[s] = static_cast<int>(comps.size()) - 1;
+    while (!stack.empty())
+    {
+      const int q = stack.back();
+      stack.pop_back();
+      comps.back().push_back(q);
+      const int r = q / cols, c = q % cols;
+      const int nb[4][2] = {{r - 1, c}, {r + 1, c}, {r, c - 1}, {r, c + 1}};
+      for (const auto& n : nb)
+        if (n[0] >= 0 && n[0] < rows && n[1] >= 0 && n[1] < cols && open[n[0] * cols + n[1]] &&
+            label[n[0] * cols + n[1]] < 0)
+        {
+          label[n[0] * cols + n[1]] = label[s];
+          stack.push_back(n[0] * cols + n[1]);
+        }
+    }
+  }
+  // Expected eye centre: 32 mm lateral of the midline, 4 mm below the nasion.
+  const double eyeRadius = (lm.nasion.local - centre).norm();
+  const double seedTheta = std::atan2(32.0, lm.nasion.local.y() - centre.y() - 10.0);
+  const double seedPhi = lm.nasion.phi - 4.0 / eyeRadius;
+  int bestComp = -1;
+  double bestD = 1e300;
+  for (int k = 0; k < static_cast<int>(comps.size()); ++k)
+  {
+    if (comps[k].size() < 5)
+      continue;
+    for (int q : comps[k])
+    {
+      const double d = std::hypot(hits[q].theta - seedTheta, hits[q].phi - seedPhi);
+      if (d < bestD)
+      {
+        bestD = d;
+        bestComp = k;
+      }
+    }
+  }
+  if (bestComp < 0)
+    throw std::runtime_error("face control points: cannot find the left orbit (no bone-free region around the eye level)");
+  int rMin = rows, rMax = -1;
+  for (int q : comps[bestComp])
+  {
+    rMin = std::min(rMin, q / cols);
+    rMax = std::max(rMax, q / cols);
+  }
+  const int rMid = (rMin + rMax) / 2;
+  int cMin = cols, cMax = -1;
+  for (int q : comps[bestComp])
+    if (q / cols == rMid)
+    {
+      cMin = std::min(cMin, q % cols);
+      cMax = std::max(cMax, q % cols);
+    }
+  lm.orbitMedialTheta = theta0 + cMin * da;
+  lm.orbitLateralTheta = theta0 + cMax * da;
+  lm.orbitBottomPhi = phi0 + rMin * da;
+  lm.orbitTopPhi = phi0 + rMax * da;
+  const FacePoint& mid = hits[rMid * cols + (cMin + cMax) / 2];
+  lm.orbitCentre = mid;
+  const double rho = std::hypot(mid.local.x(), mid.local.y() - centre.y()); // distance to the vertical axis
+  const double phiMid = phi0 + rMid * da;
+  lm.eyeInner = SkinHit(skin, centre, lm.orbitMedialTheta + 3.0 / rho, phiMid);
+  lm.eyeOuter = SkinHit(skin, centre, lm.orbitLateralTheta - 6.0 / rho, phiMid + 1.0 / eyeRadius);
+
+  // --- Left mouth corner: follow the lip line laterally until the lips no longer bulge.
+  const double mouthRadius = (lm.stomion.local - centre).norm();
+  const double dPhi = 0.5 * kDeg, dTheta = 0.5 * kDeg;
+  const int halfRows = static_cast<int>(std::ceil(8.0 / mouthRadius / dPhi)); // +-8 mm around the line
+  const int bulgeRows = static_cast<int>(std::ceil(6.0 / mouthRadius / dPhi));
+  double linePhi = lm.stomion.phi;
+  double cornerTheta = -1;
+  std::ostringstream relief;
+  relief.precision(3);
+  for (int c = 0; c * dTheta <= 50 * kDeg; ++c)
+  {
+    const double theta = c * dTheta;
+    std::vector<double> r;
+    for (int k = -halfRows; k <= halfRows; ++k)
+      r.push_back((SkinHit(skin, centre, theta, linePhi + k * dPhi).local - centre).norm());
+    // The line moves at most 1 row per column, to the local radial minimum.
+    int line = halfRows;
+    for (int k = halfRows - 1; k <= halfRows + 1; ++k)
+      if (r[k] < r[line])
+        line = k;
+    double above = -1e300, below = -1e300;
+    for (int k = 1; k <= bulgeRows; ++k)
+    {
+      above = std::max(above, r[line + k]);
+      below = std::max(below, r[line - k]);
+    }
+    const double bulge = std::min(above, below) - r[line];
+    const double lateral = SkinHit(skin, centre, theta, linePhi).local.x();
+    if (c % 4 == 0)
+      relief << " " << lateral << ":" << bulge;
+    linePhi += (line - halfRows) * dPhi;
+    if (lateral >= 15.0 && bulge < 0.3)
+    {
+      cornerTheta = theta;
+      break;
+    }
+    if (lateral > 35.0)
+      break;
+  }
+  lm.log.push_back("lip-line relief (lateral mm: groove depth mm):" + relief.str());
+  if (cornerTheta < 0)
+    throw std::runtime_error("face control points: cannot find the left mouth corner (the lip line does not end within 35 mm)");
+  lm.lipCorner = SkinHit(skin, centre, cornerTheta, linePhi);
+
+}
+
+// The atlas's landmark rules (mmrepFaceLandmarks.cxx) with the two changes that a flat, flexed
+// face in a volume cut below the chin needs (headsq):
+//  * nose tip = the profile point (within +-35 deg) farthest in front of the chord joining the
+//    profile points 20 mm above and 20 mm below it, instead of the most anterior point (which is
+//    the brow when the forehead is as far forward as the nose);
+//  * no chin landmarks (labiomental fold, pogonion need 55 mm of profile below the lower lip);
+//    the nasion chord reaches 50 mm above the nose tip, or the highest profile point when the
+//    volume stops earlier (at least 25 mm).
+// Orbits, eye corners and the mouth corner follow the atlas rules unchanged.
+FaceLandmarkSet DetectWithoutChin(const SurfaceRays& skin, const SurfaceRays& bone, const Eigen::Vector3d& centre)
+{
+  FaceLandmarkSet lm;
+  std::vector<FacePoint> profile;
+  std::vector<double> v;
+  for (double a = -75.0; a <= 65.0 + 1e-9; a += 0.25)
+  {
+    profile.push_back(SkinHit(skin, centre, 0, a * kDeg));
+    v.push_back(profile.back().local.y());
+  }
+  const int n = static_cast<int>(v.size());
+  auto need = [&](int i, const char* what) {
+    if (i < 0)
+      throw std::runtime_error(std::string("face control points: cannot find the ") + what +
+                               " on the mid-sagittal skin profile");
+    return i;
+  };
+  auto firstBeyond = [&](int from, int step, double dz) {
+    for (int i = from; i >= 0 && i < n; i += step)
+      if (std::abs(profile[i].local.z() - profile[from].local.z()) >= dz)
+        return i;
+    return -1;
+  };
+  // Signed distance of profile point i in front of the chord a-b (in the (v, w) plane).
+  auto inFront = [&](int i, int a, int b) {
+    const Eigen::Vector2d pa(profile[a].local.y(), profile[a].local.z()), pb(profile[b].local.y(), profile[b].local.z());
+    const Eigen::Vector2d t = (pb - pa).normalized(), p(profile[i].local.y(), profile[i].local.z());
+    const Eigen::Vector2d d = p - pa - (p - pa).dot(t) * t;
+    return d.x() >= 0 ? d.norm() : -d.norm();
+  };
+  int prn = -1;
+  double best = -1e300;
+  for (int i = 0; i < n; ++i)
+  {
+    if (std::abs(profile[i].phi) > 35 * kDeg)
+      continue;
+    const int up = firstBeyond(i, +1, 20.0), down = firstBeyond(i, -1, 20.0);
+    if (up < 0 || down < 0)
+      continue;
+    const double p = inFront(i, up, down);
+    if (p > best)
+    {
+      best = p;
+      prn = i;
+    }
+  }
+  need(prn, "nose tip");
+  std::vector<double> vs(v.size());
+  for (int i = 0; i < n; ++i)
+  {
+    double sum = 0;
+    int k0 = std::max(0, i - 2), k1 = std::min(n - 1, i + 2);
+    for (int k = k0; k <= k1; ++k)
+      sum += v[k];
+    vs[i] = sum / (k1 - k0 + 1);
+  }
+  const double delta = 0.5;
+  const int sn = need(NextExtremum(vs, prn, -1, true, delta), "subnasale");
+  const int ls = need(NextExtremum(vs, sn, -1, false, delta), "upper lip");
+  const int st = need(NextExtremum(vs, ls, -1, true, delta), "stomion");
+  const int li = need(NextExtremum(vs, st, -1, false, delta), "lower lip");
+  int browEnd = firstBeyond(prn, +1, 50.0);
+  if (browEnd < 0)
+  {
+    browEnd = prn;
+    for (int i = prn; i < n; ++i)
+      if (profile[i].local.z() > profile[browEnd].local.z())
+        browEnd = i;
+    if (profile[browEnd].local.z() - profile[prn].local.z() < 25.0)
+      throw std::runtime_error("face control points: the skin profile ends less than 25 mm above the nose tip");
+  }
+  int na = -1;
+  best = -1e300;
+  for (int i = prn + 1; i < browEnd; ++i)
+    if (-inFront(i, prn, browEnd) > best)
+    {
+      best = -inFront(i, prn, browEnd);
+      na = i;
+    }
+  need(na, "nasion");
+  lm.pronasale = profile[prn];
+  lm.subnasale = profile[sn];
+  lm.upperLip = profile[ls];
+  lm.stomion = profile[st];
+  lm.lowerLip = profile[li];
+  lm.nasion = profile[na];
+  OrbitAndMouthCorner(skin, bone, centre, lm);
+  return lm;
+}
+} // namespace
+
+Eigen::Vector3d FaceCentreOfLocalSkin(vtkPolyData* skinLocal)
+{
+  if (!skinLocal || skinLocal->GetNumberOfPoints() == 0)
+    throw std::runtime_error("face control points: the skin surface has no points");
+  Eigen::Vector3d tip(0, -1e300, 0);
+  for (vtkIdType p = 0; p < skinLocal->GetNumberOfPoints(); ++p)
+  {
+    double q[3];
+    skinLocal->GetPoint(p, q);
+    if (std::abs(q[0]) < 10 && q[1] > tip.y())
+      tip = Eigen::Vector3d(q[0], q[1], q[2]);
+  }
+  if (tip.y() == -1e300)
+    throw std::runtime_error("face control points: no skin within 10 mm of the symmetry plane");
+  double back = tip.y();
+  for (vtkIdType p = 0; p < skinLocal->GetNumberOfPoints(); ++p)
+  {
+    double q[3];
+    skinLocal->GetPoint(p, q);
+    if (std::abs(q[0]) < 10 && std::abs(q[2] - tip.z()) < 10)
+      back = std::min(back, q[1]);
+  }
+  return {0, 0.5 * (tip.y() + back), tip.z() - 10};
+}
+
+FaceControlPoints DetectFaceControlPoints(vtkPolyData* skin, vtkPolyData* skull, const Plane& plane)
+{
+  if (!skin || skin->GetNumberOfPolys() == 0)
+    throw std::runtime_error("face control points: the skin surface has no triangles");
+  if (!skull || skull->GetNumberOfPolys() == 0)
+    throw std::runtime_error("face control points: the skull surface has no triangles");
+  FaceControlPoints out;
+  // Same frame origin as the atlas builder (the skin's bounding-box centre, projected on the plane).
+  double b[6];
+  skin->GetBounds(b);
+  out.frame = FaceFrame::FromPlane(plane, Eigen::Vector3d(0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5])));
+  auto skinLocal = ToLocal(skin, out.frame);
+  auto skullLocal = ToLocal(skull, out.frame);
+  out.centre = FaceCentreOfLocalSkin(skinLocal);
+  SurfaceRays skinRays(skinLocal), boneRays(skullLocal);
+  try
+  {
+    out.landmarks = DetectFaceLandmarks(skinRays, boneRays, out.centre);
+    out.log.push_back("atlas landmark rules");
+  }
+  catch (const std::runtime_error& e)
+  {
+    out.log.push_back(std::string("atlas landmark rules failed (") + e.what() +
+                      "); nose tip by protrusion, no chin landmarks");
+    out.landmarks = DetectWithoutChin(skinRays, boneRays, out.centre);
+    out.usedFallback = true;
+  }
+  for (const auto& l : out.landmarks.log)
+    out.log.push_back(l);
+  const FaceLandmarkSet& all = out.landmarks;
+  for (const auto& [name, p] : std::vector<std::pair<std::string, FacePoint>>{
+         {"pronasale", all.pronasale}, {"subnasale", all.subnasale}, {"upper lip", all.upperLip},
+         {"stomion", all.stomion}, {"lower lip", all.lowerLip}, {"nasion", all.nasion}})
+  {
+    std::ostringstream line;
+    line.precision(4);
+    line << name << ": theta " << p.theta / kDeg << " deg, phi " << p.phi / kDeg << " deg, local (" << p.local.x()
+         << ", " << p.local.y() << ", " << p.local.z() << ")";
+    out.log.push_back(line.str());
+  }
+  const FaceLandmarkSet& lm = out.landmarks;
+  // The atlas builder's correspondence between names and detected landmarks.
+  const FacePoint* points[] = {&lm.eyeInner, &lm.eyeOuter, &lm.lipCorner, &lm.upperLip, &lm.lowerLip};
+  for (std::size_t n = 0; n < 5; ++n)
+    out.points.push_back({FaceAtlasLandmarkNames()[n], out.frame.ToWorld(points[n]->local)});
+  return out;
+}
+
+} // namespace mmrep

@@ -1,0 +1,99 @@
+#include "mmrepDisplacementFieldMap.h"
+
+#include <itkVectorLinearInterpolateImageFunction.h>
+
+#include <sstream>
+#include <stdexcept>
+
+namespace mmrep
+{
+
+PointMap DisplacementFieldMap(const DisplacementField* field)
+{
+  if (field == nullptr || field->GetLargestPossibleRegion().GetNumberOfPixels() == 0)
+    throw std::invalid_argument("displacement field: empty field");
+  using Interpolator = itk::VectorLinearInterpolateImageFunction<DisplacementField, double>;
+  auto interpolator = Interpolator::New();
+  interpolator->SetInputImage(field);
+  DisplacementField::ConstPointer keep = field;
+  return [interpolator, keep](const Point3& x) -> Point3 {
+    Interpolator::PointType p;
+    for (unsigned a = 0; a < 3; ++a)
+      p[a] = x[a];
+    if (!interpolator->IsInsideBuffer(p))
+    {
+      std::ostringstream s;
+      s << "displacement field: point (" << x.x() << ", " << x.y() << ", " << x.z()
+        << ") lies outside the field's grid";
+      throw std::out_of_range(s.str());
+    }
+    const auto u = interpolator->Evaluate(p);
+    return {x.x() + u[0], x.y() + u[1], x.z() + u[2]};
+  };
+}
+
+} // namespace mmrep
+
+#include <itkImageRegionIteratorWithIndex.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <thread>
+
+namespace mmrep
+{
+
+DisplacementField::Pointer SampleDisplacementField(const PointMap& map, const std::vector<Point3>& points,
+                                                   double margin, double spacing)
+{
+  if (points.empty() || !(spacing > 0) || !(margin >= 0))
+    throw std::invalid_argument("displacement field: no points, or spacing <= 0 / margin < 0");
+  Point3 lo = points.front(), hi = points.front();
+  for (const auto& p : points)
+  {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  auto field = DisplacementField::New();
+  DisplacementField::RegionType region;
+  DisplacementField::PointType origin;
+  for (unsigned a = 0; a < 3; ++a)
+  {
+    origin[a] = lo[a] - margin;
+    region.SetSize(a, static_cast<itk::SizeValueType>(std::ceil((hi[a] - lo[a] + 2 * margin) / spacing)) + 1);
+  }
+  field->SetRegions(region);
+  field->SetOrigin(origin);
+  field->SetSpacing(spacing);
+  field->Allocate();
+  const long long slices = static_cast<long long>(region.GetSize(2));
+  const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+  std::atomic<long long> next{0};
+  std::vector<std::thread> pool;
+  for (unsigned w = 0; w < threads; ++w)
+    pool.emplace_back([&] {
+      for (long long z = next++; z < slices; z = next++)
+      {
+        auto slab = region;
+        slab.SetIndex(2, z);
+        slab.SetSize(2, 1);
+        for (itk::ImageRegionIteratorWithIndex<DisplacementField> it(field, slab); !it.IsAtEnd(); ++it)
+        {
+          DisplacementField::PointType pt;
+          field->TransformIndexToPhysicalPoint(it.GetIndex(), pt);
+          const Point3 x(pt[0], pt[1], pt[2]);
+          const Point3 u = map(x) - x;
+          DisplacementField::PixelType v;
+          for (unsigned a = 0; a < 3; ++a)
+            v[a] = static_cast<float>(u[a]);
+          it.Set(v);
+        }
+      }
+    });
+  for (auto& t : pool)
+    t.join();
+  return field;
+}
+
+} // namespace mmrep

@@ -1,0 +1,95 @@
+// The speaker model pipeline (paper §3, whole): CT -> skin and skull surfaces -> symmetry plane
+// -> elastic registration R of the atlas (distance maps inside) -> lips refinement Q -> repair
+// -> muscles carried through Q∘R. One call, usable from C++; the FaceModelPipeline module wraps it
+// and writes the files, the report and the pictures.
+//
+//   mmrep::FaceModelOptions options;                    // every stage's parameters
+//   auto model = mmrep::BuildFaceModel(ct, controlPoints, atlas, options);
+//   model.model: the FE face model of the speaker (LPS mm), model.times: seconds per stage.
+#pragma once
+
+#include "mmrepAtlasRegistration.h"
+#include "mmrepCTThresholds.h"
+#include "mmrepMeshQuality.h"
+#include "mmrepMeshRepair.h"
+#include "mmrepMuscleInference.h"
+
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace mmrep
+{
+
+struct FaceModelOptions
+{
+  // Image stage (SkinSkullSurfaces): thresholds chosen automatically unless given.
+  ThresholdMode thresholdMode = ThresholdMode::Automatic;
+  double skinThreshold = std::numeric_limits<double>::quiet_NaN();
+  double boneThreshold = std::numeric_limits<double>::quiet_NaN();
+  unsigned int openingRadius = 1;
+  // Axial slits of the skin mask up to this height (mm) are closed (CloseAxialSlits): the lips
+  // meet at rest, as in the atlas, instead of the skin diving into the lip slit. 0: keep them.
+  double closeSlits = 4.0;
+  // Symmetry plane: estimated on the skin decimated to about this many triangles (the plane is a
+  // global property; ICP on the full surface costs 10× more for the same plane within 0.1°).
+  std::size_t planeTriangles = 40000;
+  AtlasRegistrationOptions registration; // R (progress is set by the pipeline)
+  bool refine = true;                    // Q over the lips
+  LocalRefinementOptions refinement;     // Q (plane, symmetry and progress set by the pipeline)
+  double repairThreshold = 0.3;          // scaled Jacobian every element must reach
+  int repairSweeps = 40; // a model that needs more is better re-registered than ground on
+  // (stage name, fraction of the whole pipeline done)
+  std::function<void(const std::string&, double)> progress;
+};
+
+struct StageTime
+{
+  std::string name;
+  double seconds = 0;
+};
+
+// Errors of one state of the mesh against the subject surfaces, measured on the mesh itself.
+struct ModelAccuracy
+{
+  std::string state; // "R", "Q∘R", "repaired"
+  SurfaceErrorStatistics skin, skull, lips;
+  std::vector<double> controlErrors; // per control point, order of FaceModelResult::controlNames
+};
+
+struct FaceModelResult
+{
+  FEMesh model;                                   // the speaker model: repaired, muscles inferred
+  FEMesh registered, refined;                     // the atlas after R and after Q∘R (for inspection)
+  vtkSmartPointer<vtkPolyData> skin, skull;       // the subject surfaces (LPS mm)
+  CTThresholds thresholds;
+  Plane plane;                                    // the subject's mid-sagittal plane
+  double planeResidual = 0;                       // mm, RMS of the mirrored skin
+  ElasticTransform registration, refinement;      // R and Q (Q is identity when not refined)
+  RegistrationReport registrationReport;          // R's stages as RegisterAtlas reports them
+  quality::QualitySummary qualityAfterQ;          // before the repair
+  RepairReport repair;
+  MuscleInferenceReport muscles;
+  std::vector<std::string> controlNames;          // atlas landmark names = subject control points
+  std::vector<Point3> controlTargets;             // the subject's control points, same order
+  std::vector<ModelAccuracy> accuracy;            // after R, after Q∘R, after repair
+  std::vector<StageTime> times;
+  double totalSeconds = 0;
+
+  // Q∘R(x), atlas -> subject.
+  Point3 AtlasToSubject(const Point3& x) const { return refinement.Apply(registration.Apply(x)); }
+};
+
+// Throws std::invalid_argument for inputs that cannot work (control points missing, unnamed or
+// outside the CT volume, an atlas without the sets or landmarks), std::runtime_error when a stage
+// fails (no head in the CT, surfaces not overlapping the atlas). A repair that cannot reach the
+// threshold does not throw: result.repair.success says so and the caller decides.
+FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& controlPoints, const FEMesh& atlas,
+                               const FaceModelOptions& options = {});
+
+// Skin faces of the model's solids (quadrilaterals/triangles whose nodes are all in `skin`, on the
+// boundary), as a surface for pictures and comparisons; point ids are the mesh's node ids.
+vtkSmartPointer<vtkPolyData> ModelSkinSurface(const FEMesh& mesh, const std::string& skinSet = "skin");
+
+} // namespace mmrep

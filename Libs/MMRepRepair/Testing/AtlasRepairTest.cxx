@@ -1,0 +1,132 @@
+// Repair of tangled copies of the shipped atlas (Resources/Atlas): a reduced AtlasRepairBenchmark
+// with assertions. Quality is checked with vtkMeshQuality, symmetry against the mirror partners,
+// accuracy as distances of the nodes to the reference surfaces.
+#include "mmrepAtlasTangles.h"
+#include "mmrepFEMeshIO.h"
+#include "mmrepMeshRepair.h"
+#include "mmrepSurfaceDistance.h"
+
+#include <gtest/gtest.h>
+
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkMeshQuality.h>
+#include <vtkNew.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace
+{
+using namespace mmrep;
+
+const mmrep::testing::MeshTangleContext& Context()
+{
+  static const mmrep::testing::MeshTangleContext context = mmrep::testing::LoadTangleContext(
+    MMREP_SOURCE_DIR "/Resources/Atlas/FaceAtlas.vtu", MMREP_SOURCE_DIR "/Resources/Atlas/FaceAtlasSkin.vtp",
+    MMREP_SOURCE_DIR "/Resources/Atlas/FaceAtlasSkull.vtp");
+  return context;
+}
+
+RepairOptions Options(const mmrep::testing::MeshTangleContext& c)
+{
+  RepairOptions o;
+  o.skinSurface = c.skin;
+  o.skullSurface = c.skull;
+  o.hasSymmetryPlane = true;
+  o.symmetryPlane = c.plane;
+  return o;
+}
+
+// Smallest scaled Jacobian (and inverted count) over the hexahedra, from VTK's own filter.
+std::pair<double, int> VTKMinimum(const FEMesh& mesh)
+{
+  vtkNew<vtkMeshQuality> filter;
+  filter->SetInputData(ToVTK(mesh));
+  filter->SetHexQualityMeasureToScaledJacobian();
+  filter->Update();
+  vtkDataArray* q = filter->GetOutput()->GetCellData()->GetArray("Quality");
+  double worst = std::numeric_limits<double>::infinity();
+  int inverted = 0;
+  for (std::size_t e = 0; e < mesh.elements.size(); ++e)
+    if (mesh.elements[e].type == ElementType::Hexahedron)
+    {
+      const double v = q->GetTuple1(static_cast<vtkIdType>(e));
+      worst = std::min(worst, v);
+      inverted += v <= 0 ? 1 : 0;
+    }
+  return {worst, inverted};
+}
+
+TEST(RepairAtlas, ShippedAtlasIsSymmetricAndUnchangedByRepair)
+{
+  const auto& c = Context();
+  ASSERT_FALSE(c.partner.empty()) << "the shipped atlas should be mirror symmetric";
+  EXPECT_LT(mmrep::testing::SymmetryError(c.mesh, c), 1e-8);
+  FEMesh mesh = c.mesh;
+  const RepairReport report = RepairMesh(mesh, Options(c));
+  EXPECT_TRUE(report.success);
+  EXPECT_EQ(report.movedNodes, 0u);
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
+    ASSERT_EQ(mesh.nodes[i], c.mesh.nodes[i]) << "node " << i;
+}
+
+// A reduced AtlasRepairBenchmark: RandomTangle(2) (symmetric, noise 0.11 element sizes, ~480
+// inverted elements) and a milder non-symmetric tangle with a fold and a warp.
+TEST(RepairAtlas, TanglesRepairedAccuratelyAndSymmetrically)
+{
+  const auto& c = Context();
+  std::size_t invertedBefore = 0;
+  mmrep::testing::TangleOptions mild;
+  mild.seed = 11;
+  mild.noise = 0.05;
+  mild.folds = 1;
+  mild.warp = 0.5;
+  for (const mmrep::testing::TangleOptions& tangle : {mmrep::testing::RandomTangle(2), mild})
+  {
+    SCOPED_TRACE("seed " + std::to_string(tangle.seed));
+    FEMesh mesh = mmrep::testing::TangleMesh(c, tangle);
+    if (tangle.symmetric)
+      ASSERT_LT(mmrep::testing::SymmetryError(mesh, c), 1e-12) << "the generator must produce symmetric input";
+    const auto [minBefore, invertedVTK] = VTKMinimum(mesh);
+    EXPECT_LT(minBefore, 0.3);
+    invertedBefore += static_cast<std::size_t>(invertedVTK);
+    const SurfaceDistance lipsBefore = MeasureSurfaceDistance(mesh, "lips", c.skin);
+    const SurfaceDistance skinBefore = MeasureSurfaceDistance(mesh, "skin", c.skin);
+    const SurfaceDistance skullBefore = MeasureSurfaceDistance(mesh, "skull", c.skull);
+    EXPECT_LT(skinBefore.max, 1e-6); // the generator leaves surface nodes on their surfaces
+
+    const RepairReport report = RepairMesh(mesh, Options(c));
+    EXPECT_GT(report.movedNodes, 0u);
+    const auto [minAfter, invertedAfter] = VTKMinimum(mesh);
+    EXPECT_NEAR(report.minScaledJacobianAfter, minAfter, 1e-12);
+    EXPECT_EQ(report.success, minAfter >= 0.3 && invertedAfter == 0);
+    // Measured on the shipped atlas (3 mm minimum thickness): these tangles keep 6-12 elements
+    // below 0.3, flat lip-slit epidermis and hypodermis where the bone is near (the 99 %
+    // success target is not met: Libs/MMRepRepair/README.md). What the repair must still do:
+    // remove almost every inverted element and leave very few below the threshold.
+    std::printf("seed %u: %d inverted before, %d after; %zu elements below 0.3 after, min %.3f\n", tangle.seed, invertedVTK,
+                invertedAfter, report.failedElements.size(), minAfter);
+    EXPECT_LE(invertedAfter * 20, invertedVTK); // at least 95 % of the inverted elements repaired
+    EXPECT_LE(report.failedElements.size(), mesh.SolidElementCount() / 500);
+
+    // Lips accuracy: the target is a loss of at most 0.05 mm.
+    const SurfaceDistance lipsAfter = MeasureSurfaceDistance(mesh, "lips", c.skin);
+    EXPECT_EQ(lipsAfter.count, c.mesh.nodeSets.at("lips").size());
+    EXPECT_LE(lipsAfter.max - lipsBefore.max, 0.05);
+    EXPECT_LT(MeasureSurfaceDistance(mesh, "skin", c.skin).max, skinBefore.max + 1e-6);
+    EXPECT_LT(MeasureSurfaceDistance(mesh, "skull", c.skull).max, skullBefore.max + 1e-6);
+    // Mid-sagittal nodes on the plane; symmetric input stays symmetric to 1e-9 relative.
+    for (const auto id : c.mesh.nodeSets.at("midsagittal"))
+      ASSERT_LT(std::abs(c.plane.SignedDistance(mesh.nodes[id])), 1e-9 * c.diagonal) << "node " << id;
+    if (tangle.symmetric)
+    {
+      EXPECT_TRUE(report.symmetricPairs);
+      EXPECT_LT(mmrep::testing::SymmetryError(mesh, c), 1e-9);
+    }
+  }
+  EXPECT_GT(invertedBefore, 0u) << "the tangles should contain inverted elements";
+}
+
+} // namespace

@@ -1,0 +1,259 @@
+// Unit tests of the CalculiX deck, runner and .frd reader on small blocks with known answers.
+#include "mmrepMuscleActivation.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace
+{
+using namespace mmrep;
+namespace sim = mmrep::simulation;
+
+// nx × ny × nz hexahedra of size h (VTK node order), one layer; node set "skull" = nodes at z = 0.
+FEMesh Block(int nx, int ny, int nz, double h, TissueLayer layer = TissueLayer::Dermis)
+{
+  FEMesh mesh;
+  const auto id = [&](int i, int j, int k) { return static_cast<std::int32_t>((k * (ny + 1) + j) * (nx + 1) + i); };
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i)
+      {
+        mesh.nodes.emplace_back(i * h, j * h, k * h);
+        if (k == 0)
+          mesh.nodeSets["skull"].push_back(id(i, j, k));
+      }
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+      {
+        Element e;
+        e.type = ElementType::Hexahedron;
+        e.layer = layer;
+        e.nodes = {id(i, j, k),         id(i + 1, j, k),         id(i + 1, j + 1, k),         id(i, j + 1, k),
+                   id(i, j, k + 1),     id(i + 1, j, k + 1),     id(i + 1, j + 1, k + 1),     id(i, j + 1, k + 1)};
+        mesh.elements.push_back(e);
+      }
+  return mesh;
+}
+
+// Adds a straight muscle track through `points` (each inside the block), embedded by search.
+void AddMuscle(FEMesh& mesh, const std::string& name, const std::vector<Point3>& points, int nx, int ny, double h)
+{
+  MuscleTrack t;
+  for (std::size_t p = 0; p < points.size(); ++p)
+  {
+    const Point3& x = points[p];
+    const int i = std::min(static_cast<int>(x.x() / h), nx - 1), j = std::min(static_cast<int>(x.y() / h), ny - 1),
+              k = static_cast<int>(x.z() / h);
+    Embedding emb;
+    emb.element = (k * ny + j) * nx + i;
+    emb.pcoords = {x.x() / h - i, x.y() / h - j, x.z() / h - k};
+    t.nodes.push_back(static_cast<std::int32_t>(mesh.nodes.size()));
+    t.embedding.push_back(emb);
+    mesh.nodes.push_back(x);
+    if (p > 0)
+    {
+      Element c;
+      c.type = ElementType::Cable;
+      c.nodes[0] = t.nodes[p - 1];
+      c.nodes[1] = t.nodes[p];
+      t.cables.push_back(static_cast<std::int32_t>(mesh.elements.size()));
+      mesh.elements.push_back(c);
+    }
+  }
+  mesh.muscles[name] = t;
+  mesh.elementSets[name] = t.cables;
+}
+
+// One 10 mm hexahedron in uniaxial compression by four vertical cables along its edges: bottom nodes
+// slide on z = 0 (node 0 fixed, node 1 also kept on y = 0), lateral faces free, so the state is
+// homogeneous and, at small strain, the shortening δ solves E δ/L · A = 4 EA_c/L · (a ε L − δ):
+// δ = 4k a ε L / (E A / L + 4k), k = EA_c / L, E = 9Kμ/(3K+μ) from the polynomial law's μ and K.
+TEST(Simulation, SingleHexUniaxialMatchesSmallStrainSolution)
+{
+  FEMesh mesh = Block(1, 1, 1, 10.0);
+  mesh.nodeSets["skull"] = {0};
+  const double L = 10, A = 100;
+  for (int c = 0; c < 4; ++c)
+  {
+    MuscleTrack t;
+    for (int end = 0; end < 2; ++end)
+    {
+      const int hexNode = c + 4 * end; // bottom corner c, then the top corner above it
+      Embedding emb;
+      emb.element = 0;
+      const Point3& p = mesh.nodes[static_cast<std::size_t>(hexNode)];
+      emb.pcoords = {p.x() / L, p.y() / L, p.z() / L};
+      t.nodes.push_back(static_cast<std::int32_t>(mesh.nodes.size()));
+      t.embedding.push_back(emb);
+      mesh.nodes.push_back(p);
+    }
+    Element cable;
+    cable.type = ElementType::Cable;
+    cable.nodes[0] = t.nodes[0];
+    cable.nodes[1] = t.nodes[1];
+    t.cables.push_back(static_cast<std::int32_t>(mesh.elements.size()));
+    mesh.elements.push_back(cable);
+    mesh.muscles["edge" + std::to_string(c)] = t;
+  }
+  mesh.Validate();
+
+  sim::ActivationOptions options;
+  for (int c = 0; c < 4; ++c)
+    options.deck.activations.push_back({"edge" + std::to_string(c), 1.0});
+  options.deck.hexahedronType = "C3D8";
+  options.deck.cables.axialStiffness = 0.5;
+  options.deck.cables.maxContraction = 0.001;
+  for (int n = 0; n < 4; ++n)
+    options.deck.slidingNodes.push_back({n, Point3::UnitZ()});
+  options.deck.slidingNodes.push_back({1, Point3::UnitY()});
+  options.run.threads = 1;
+  const sim::ActivationResult r = sim::SimulateMuscleActivation(mesh, options);
+  ASSERT_TRUE(r.run.converged);
+  EXPECT_EQ(r.deck.slidingNodes, 4u); // node 0 is fixed, so its sliding condition is skipped
+  EXPECT_EQ(r.run.cutbacks, 0);
+
+  const sim::HyperelasticMaterial m = sim::FaceTissue();
+  const double mu = m.ShearModulus(), K = m.BulkModulus();
+  const double E = 9 * K * mu / (3 * K + mu);
+  const double k = options.deck.cables.axialStiffness / L;
+  const double expected = 4 * k * 0.001 * L / (E * A / L + 4 * k);
+  for (int n = 4; n < 8; ++n)
+  {
+    const double delta = -r.displacements[static_cast<std::size_t>(n)].z();
+    std::printf("top node %d: shortening %.6g mm, small-strain solution %.6g mm\n", n, delta, expected);
+    EXPECT_NEAR(delta, expected, 0.01 * expected);
+  }
+  // Lateral expansion by the Poisson ratio of the initial response: ν = (3K − 2μ)/(2(3K + μ)).
+  const double nu = (3 * K - 2 * mu) / (2 * (3 * K + mu));
+  // Node 7 is the top corner at (10, 10, 10); node 0 is fixed at the origin.
+  EXPECT_NEAR(r.displacements[7].x(), nu * expected, 0.02 * nu * expected);
+  EXPECT_NEAR(r.displacements[7].y(), nu * expected, 0.02 * nu * expected);
+  // The embedded cable nodes follow the corners they sit on.
+  for (const auto& [name, t] : mesh.muscles)
+    for (std::size_t i = 0; i < 2; ++i)
+    {
+      const auto host = static_cast<std::size_t>(std::stoi(name.substr(4)) + 4 * static_cast<int>(i));
+      EXPECT_LT((r.displacements[static_cast<std::size_t>(t.nodes[i])] - r.displacements[host]).norm(), 1e-5);
+    }
+  // Cable force balances the tissue: 4F = E δ/L A.
+  ASSERT_EQ(r.muscles.size(), 4u);
+  EXPECT_NEAR(4 * r.muscles[0].meanForce, E * expected / L * A, 0.02 * E * expected / L * A);
+}
+
+// A curved track in a free block: activation shortens the track and pulls its ends toward each other.
+TEST(Simulation, BlockMuscleShortensAndIsSymmetric)
+{
+  const int nx = 4, ny = 2, nz = 2;
+  const double h = 5;
+  FEMesh mesh = Block(nx, ny, nz, h);
+  AddMuscle(mesh, "M", {{2.5, 5, 7.5}, {7.5, 5, 7.5}, {12.5, 5, 7.5}, {17.5, 5, 7.5}}, nx, ny, h);
+  mesh.Validate();
+  sim::ActivationOptions options;
+  options.deck.activations = {{"M", 1.0}};
+  options.run.threads = 1;
+  const sim::ActivationResult r = sim::SimulateMuscleActivation(mesh, options);
+  ASSERT_TRUE(r.run.converged);
+  const auto& t = mesh.muscles.at("M");
+  const Point3 first = r.displacements[static_cast<std::size_t>(t.nodes.front())];
+  const Point3 last = r.displacements[static_cast<std::size_t>(t.nodes.back())];
+  EXPECT_GT(first.x(), 0.1);                      // pulled toward the middle
+  EXPECT_NEAR(last.x(), -first.x(), 1e-3);        // mirror symmetry of block and track
+  EXPECT_NEAR(last.z(), first.z(), 1e-3);
+  ASSERT_EQ(r.muscles.size(), 1u);
+  EXPECT_LT(r.muscles[0].length, r.muscles[0].restLength);
+  EXPECT_GT(r.muscles[0].length, (1 - options.deck.cables.maxContraction) * r.muscles[0].restLength);
+  EXPECT_GT(r.muscles[0].meanForce, 0);
+}
+
+TEST(Simulation, CableLawIsTensionOnly)
+{
+  sim::CableModel c;
+  c.axialStiffness = 2;
+  c.maxContraction = 0.25;
+  EXPECT_DOUBLE_EQ(sim::CableForce(c, 4, 0, 1), 0.5);        // passive stretch 1 mm: 2/4 · 1
+  EXPECT_DOUBLE_EQ(sim::CableForce(c, 4, 1, 0), 0.5);        // isometric at full activation: 2 · 0.25
+  EXPECT_DOUBLE_EQ(sim::CableForce(c, 4, 1, -1), 0);         // shortened to the active rest length
+  EXPECT_NEAR(sim::CableForce(c, 4, 1, -2), -c.slackRatio * 0.5, 1e-15); // slack: 0.1 % in compression
+}
+
+TEST(Simulation, ActivationErrorsAreClear)
+{
+  FEMesh mesh = Block(2, 1, 1, 5);
+  try
+  {
+    sim::CheckActivations(mesh, {{"M", 1}});
+    FAIL() << "no exception";
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("no muscles"), std::string::npos) << e.what();
+  }
+  AddMuscle(mesh, "Zyg_L", {{1, 2, 2}, {8, 2, 2}}, 2, 1, 5);
+  AddMuscle(mesh, "Zyg_R", {{1, 3, 3}, {8, 3, 3}}, 2, 1, 5);
+  try
+  {
+    sim::CheckActivations(mesh, {{"zyg_L", 1}});
+    FAIL() << "no exception";
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_EQ(std::string(e.what()), "unknown muscle 'zyg_L'; the model's muscles are: Zyg_L, Zyg_R");
+  }
+  EXPECT_THROW(sim::CheckActivations(mesh, {{"Zyg_L", 1.5}}), std::invalid_argument);
+  EXPECT_THROW(sim::CheckActivations(mesh, {{"Zyg_L", 0}}), std::invalid_argument);
+  EXPECT_THROW(sim::CheckActivations(mesh, {{"Zyg_L", 1}, {"Zyg_L", 1}}), std::invalid_argument);
+  EXPECT_NO_THROW(sim::CheckActivations(mesh, {{"Zyg_L", 1}, {"Zyg_R", 0}}));
+}
+
+TEST(Simulation, MissingCalculiXIsReported)
+{
+  try
+  {
+    sim::FindCalculiX("ccx-not-installed-here");
+    FAIL() << "no exception";
+  }
+  catch (const std::runtime_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("calculix-ccx"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(sim::FindCalculiX("/nonexistent/ccx"), std::runtime_error);
+}
+
+TEST(Simulation, FrdReaderParsesLongAndShortRecords)
+{
+  const std::string text =
+    "    1C\n"
+    "    2C                             2                                     1\n"
+    " -1         1 0.00000E+00 0.00000E+00 0.00000E+00\n"
+    " -3\n"
+    "    1PSTEP                         1           1           1\n"
+    "  100CL  101 5.00000E-01           2                     0    1           1\n"
+    " -4  DISP        4    1\n"
+    " -5  D1          1    2    1    0\n"
+    " -1         1 1.00000E-01-2.50000E-01 3.00000E+00\n"
+    " -1        12-1.00000E-03 0.00000E+00 1.23450E+02\n"
+    " -3\n"
+    "  100CL  102 1.000000000           2                     0    2           0\n"
+    " -4  DISP        4    1\n"
+    " -1    1 2.00000E-01-5.00000E-01 6.00000E+00\n"
+    " -1   12-2.00000E-03 0.00000E+00 2.46900E+02\n"
+    " -3\n"
+    " 9999\n";
+  std::istringstream in(text);
+  const auto blocks = sim::ReadFrd(in, "test.frd");
+  ASSERT_EQ(blocks.size(), 2u);
+  EXPECT_EQ(blocks[0].name, "DISP");
+  EXPECT_DOUBLE_EQ(blocks[0].time, 0.5);
+  EXPECT_EQ(blocks[0].values.at(12), (std::vector<double>{-1e-3, 0, 123.45}));
+  const sim::FrdBlock* last = sim::LastBlock(blocks, "DISP");
+  ASSERT_NE(last, nullptr);
+  EXPECT_DOUBLE_EQ(last->time, 1.0);
+  EXPECT_EQ(last->values.at(1), (std::vector<double>{0.2, -0.5, 6}));
+  std::istringstream truncated(text.substr(0, text.find(" -3\n  100CL")));
+  EXPECT_THROW(sim::ReadFrd(truncated, "t.frd"), std::runtime_error);
+}
+
+} // namespace

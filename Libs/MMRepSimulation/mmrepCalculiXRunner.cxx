@@ -1,0 +1,212 @@
+// ccx runner: temporary job folder, live log parsing for progress, convergence checks.
+#include "mmrepCalculiXRunner.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+namespace mmrep::simulation
+{
+namespace fs = std::filesystem;
+namespace
+{
+std::string Quote(const std::string& s)
+{
+  std::string q = "'";
+  for (char c : s)
+    q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+bool IsExecutable(const fs::path& p)
+{
+  std::error_code ec;
+  return fs::is_regular_file(p, ec) && ::access(p.c_str(), X_OK) == 0;
+}
+
+// Removes the job folder at the end of the run unless it is to be kept.
+class JobDirectory
+{
+public:
+  explicit JobDirectory(bool keep) : keep_(keep)
+  {
+    std::string pattern = (fs::temp_directory_path() / "mmrep-ccx-XXXXXX").string();
+    if (::mkdtemp(pattern.data()) == nullptr)
+      throw std::runtime_error("cannot create a temporary folder for CalculiX in " + fs::temp_directory_path().string());
+    path_ = pattern;
+  }
+  ~JobDirectory()
+  {
+    std::error_code ec;
+    if (!keep_)
+      fs::remove_all(path_, ec);
+  }
+  const fs::path& path() const { return path_; }
+
+private:
+  fs::path path_;
+  bool keep_;
+};
+} // namespace
+
+std::string FindCalculiX(const std::string& executable)
+{
+  std::string wanted = executable;
+  if (wanted.empty())
+    if (const char* env = std::getenv("MMREP_CCX"); env != nullptr && *env != '\0')
+      wanted = env;
+  if (!wanted.empty())
+  {
+    if (wanted.find('/') != std::string::npos)
+    {
+      if (!IsExecutable(wanted))
+        throw std::runtime_error("CalculiX executable '" + wanted + "' does not exist or is not executable");
+      return wanted;
+    }
+  }
+  else
+    wanted = "ccx";
+  if (const char* path = std::getenv("PATH"))
+  {
+    std::string dirs = path;
+    std::size_t start = 0;
+    while (start <= dirs.size())
+    {
+      const std::size_t end = std::min(dirs.find(':', start), dirs.size());
+      const fs::path candidate = fs::path(dirs.substr(start, end - start)) / wanted;
+      if (end > start && IsExecutable(candidate))
+        return candidate.string();
+      start = end + 1;
+    }
+  }
+  throw std::runtime_error("CalculiX solver '" + wanted +
+                           "' not found on PATH: install the Debian package calculix-ccx or set MMREP_CCX to the ccx executable");
+}
+
+CalculiXRun RunCalculiX(const std::string& deck, const RunOptions& options)
+{
+  const std::string ccx = FindCalculiX(options.executable);
+  if (options.threads < 1)
+    throw std::runtime_error("CalculiX needs at least one thread");
+  JobDirectory dir(options.keepDirectory);
+  {
+    std::ofstream f(dir.path() / "job.inp");
+    f << deck;
+    if (!f.flush())
+      throw std::runtime_error("cannot write the CalculiX deck in " + dir.path().string());
+  }
+  CalculiXRun run;
+  if (options.keepDirectory)
+    run.directory = dir.path().string();
+  const std::string threads = std::to_string(options.threads);
+  const std::string cmd = "cd " + Quote(dir.path().string()) + " && OMP_NUM_THREADS=" + threads +
+                          " CCX_NPROC_STIFFNESS=" + threads + " CCX_NPROC_EQUATION_SOLVER=" + threads + " " +
+                          Quote(ccx) + " -i job 2>&1 < /dev/null";
+  const auto start = std::chrono::steady_clock::now();
+  FILE* pipe = ::popen(cmd.c_str(), "r");
+  if (pipe == nullptr)
+    throw std::runtime_error("cannot start CalculiX '" + ccx + "'");
+  char buffer[4096];
+  std::string pending;
+  bool finished = false;
+  int appendNext = 0;
+  const auto handleLine = [&](const std::string& line) {
+    run.log += line + "\n";
+    if (line.find(" iteration ") == 0)
+      ++run.iterations;
+    else if (line.find("actual step time=") != std::string::npos && options.progress)
+    {
+      try
+      {
+        options.progress(std::stod(line.substr(line.find('=') + 1)));
+      }
+      catch (const std::exception&)
+      {
+      }
+    }
+    else if (line.find("increment size decreased") != std::string::npos ||
+             line.find("too slow convergence") != std::string::npos || line.find("divergence") != std::string::npos)
+      ++run.cutbacks;
+    else if (line.find("Job finished") != std::string::npos)
+      finished = true;
+    // ccx continues an error message on the following lines, up to an empty line.
+    if (appendNext > 0)
+    {
+      const auto first = line.find_first_not_of(' ');
+      if (first == std::string::npos)
+        appendNext = 0;
+      else
+      {
+        std::string part = line.substr(first);
+        for (std::size_t p; (p = part.find("  ")) != std::string::npos;)
+          part.erase(p, 1);
+        run.message += " " + part;
+        --appendNext;
+      }
+    }
+    if (run.message.empty() && line.find("*ERROR") != std::string::npos)
+    {
+      run.message = line.substr(line.find("*ERROR"));
+      appendNext = 3;
+    }
+  };
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr)
+  {
+    pending += buffer;
+    for (std::size_t nl; (nl = pending.find('\n')) != std::string::npos;)
+    {
+      handleLine(pending.substr(0, nl));
+      pending.erase(0, nl + 1);
+    }
+  }
+  if (!pending.empty())
+    handleLine(pending);
+  const int status = ::pclose(pipe);
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  if (run.exitCode == 127)
+    throw std::runtime_error("cannot run CalculiX '" + ccx + "' (exit code 127)");
+
+  if (options.keepDirectory)
+    std::ofstream(dir.path() / "job.log") << run.log;
+  const fs::path frd = dir.path() / "job.frd";
+  if (fs::exists(frd))
+    run.results = ReadFrdFile(frd.string());
+  run.increments = 0;
+  for (const auto& b : run.results)
+    if (b.name == "DISP")
+    {
+      ++run.increments;
+      run.stepTime = b.time;
+    }
+  run.converged = run.exitCode == 0 && finished && run.increments > 0 && run.stepTime > 1 - 1e-6;
+  if (!run.converged && run.message.empty())
+  {
+    // Last non-empty log line tells what ccx was doing when it stopped.
+    std::string last;
+    std::size_t end = run.log.size();
+    while (last.empty() && end > 0)
+    {
+      const std::size_t b = run.log.rfind('\n', end - 1);
+      const std::size_t from = b == std::string::npos ? 0 : b + 1;
+      last = run.log.substr(from, end - from);
+      while (!last.empty() && (last.back() == ' ' || last.back() == '\n'))
+        last.pop_back();
+      last.erase(0, std::min(last.size(), last.find_first_not_of(' ')));
+      end = b == std::string::npos ? 0 : b;
+    }
+    run.message = "CalculiX stopped at step time " + std::to_string(run.stepTime) + " (exit code " +
+                  std::to_string(run.exitCode) + "); last log line: " + last;
+  }
+  if (!run.converged && options.keepDirectory)
+    run.message += " (job folder kept: " + run.directory + ")";
+  return run;
+}
+
+} // namespace mmrep::simulation
