@@ -169,6 +169,23 @@ Outcome RunSubject(const Subject& s, const mmrep::FEMesh& atlas, const mmrep::Pl
                   worstLips);
     }
     std::printf("  node error vs truth after the similarity alone: all nodes mean %.3f mm\n", simSum / atlas.nodes.size());
+    // Muscle insertions (first and last point of every track) carried by Q∘R, as MuscleInference
+    // does, against the truth F (issue 7's target: mean <= 1 mm).
+    {
+      double sum = 0, worst = 0;
+      std::size_t count = 0;
+      for (const auto& [name, track] : atlas.muscles)
+        for (const auto n : {track.nodes.front(), track.nodes.back()})
+        {
+          const auto& a = atlas.nodes[static_cast<std::size_t>(n)];
+          const double e = (q.transform.Apply(r.transform.Apply(a)) - s.warp->Forward(a)).norm();
+          sum += e;
+          worst = std::max(worst, e);
+          ++count;
+        }
+      std::printf("  muscle insertions (track ends) vs truth after Q∘R: mean %.3f max %.3f mm (%zu points)\n", sum / count,
+                  worst, count);
+    }
     const double angle =
       std::acos(std::min(1.0, std::abs(s.data.plane.normal.dot(s.truePlane.normal)))) * 180.0 / M_PI;
     // Offset: distance between the planes at the face (the control points' centroid, projected).

@@ -2,6 +2,7 @@
 // non-folding, exact symmetry, the displacement field, and the local refinement.
 #include "mmrepAtlasRegistration.h"
 #include "mmrepElasticTestData.h"
+#include "mmrepMeshQuality.h"
 
 #include <gtest/gtest.h>
 
@@ -326,4 +327,33 @@ TEST(ElasticReport, MarkdownTableMatchesTheStages)
   // Q's own report: before / after rows, no control points.
   const std::string q = d.refinement.Report().ToMarkdown("Q");
   EXPECT_NE(q.find("| Q∘R | " + fmt(d.refinement.after.skin.mean)), std::string::npos) << q;
+}
+
+// The mesh guard: with it, no hexahedron of R's or Q∘R's mesh ends below the floor (quality
+// measured independently of the optimiser's bookkeeping). The floor is set between the atlas's
+// worst element and what the unguarded registration leaves, so the guard has to act.
+TEST(ElasticRegistration, MeshGuardKeepsEveryElementAboveTheFloor)
+{
+  const auto& d = Data();
+  for (const FEMesh* mesh : {&d.registration.mesh, &d.refinement.mesh})
+  {
+    const auto q = quality::SummarizeScaledJacobian(*mesh, AtlasRegistrationOptions{}.elementQualityFloor);
+    EXPECT_EQ(q.inverted, 0u);
+    EXPECT_GE(q.min, AtlasRegistrationOptions{}.elementQualityFloor - 1e-12);
+  }
+  AtlasRegistrationOptions unguarded;
+  unguarded.elementQualityFloor = -1;
+  const auto free = RegisterAtlas(d.atlas.mesh, d.atlas.plane, d.subject, unguarded);
+  const double atlasMin = quality::SummarizeScaledJacobian(d.atlas.mesh, 0.3).min;
+  const double freeMin = quality::SummarizeScaledJacobian(free.mesh, 0.3).min;
+  ASSERT_LT(freeMin, atlasMin - 0.01) << "the unguarded registration should lower the worst element";
+  AtlasRegistrationOptions guarded;
+  guarded.elementQualityFloor = 0.5 * (atlasMin + freeMin);
+  const auto r = RegisterAtlas(d.atlas.mesh, d.atlas.plane, d.subject, guarded);
+  const double guardedMin = quality::SummarizeScaledJacobian(r.mesh, 0.3).min;
+  std::cout << "worst scaled Jacobian: atlas " << atlasMin << ", unguarded R " << freeMin << ", R guarded at "
+            << guarded.elementQualityFloor << ": " << guardedMin << "; skin mean " << free.report.Last().skin.mean
+            << " -> " << r.report.Last().skin.mean << " mm" << std::endl;
+  EXPECT_GE(guardedMin, guarded.elementQualityFloor - 1e-12);
+  EXPECT_LT(r.report.Last().skin.mean, 0.3); // still a fit
 }
