@@ -512,6 +512,7 @@ AtlasRegistrationResult RegisterAtlas(const FEMesh& atlas, const Plane& atlasPla
   opt.controlPointTolerance = options.controlPointTolerance;
   opt.controlPointWeightCap = options.controlPointWeightCap;
   opt.elementQualityFloor = options.elementQualityFloor;
+  opt.tieWeight = options.tieWeight;
   opt.progress = [&](double f) { progress(0.22 + 0.73 * f); };
   RegistrationStage elastic;
   elastic.name = "elastic";

@@ -38,6 +38,7 @@ public:
     for (std::size_t h = 0; h < problem_.hexahedra.size(); ++h)
       hexQuality_[h] = HexQuality(h, nullptr);
     hexStamp_.assign(problem_.hexahedra.size(), 0);
+    start_ = problem_.points;
     trialSlot_.assign(n, -1);
   }
 
@@ -116,9 +117,10 @@ public:
       // |d|: a signed map (negative inside) gives the same energy as an unsigned one, but its
       // trilinear interpolation crosses zero at the surface instead of rounding off the V of |d|.
       const double sign = v < 0 ? -1.0 : 1.0;
+      const Eigen::Vector3d u = p - start_[k];
       if (g)
-        *g = sign * (transform_.frameRotation * gw);
-      return sign * v;
+        *g = sign * (transform_.frameRotation * gw) + 2.0 * options_.tieWeight * u;
+      return sign * v + options_.tieWeight * u.squaredNorm();
     }
     const std::size_t i = k - problem_.points.size();
     const Eigen::Vector3d d = p - problem_.controlTargets[i];
@@ -438,6 +440,7 @@ private:
   std::vector<unsigned> hexStamp_;
   unsigned stamp_ = 0;
   std::vector<int> trialSlot_;
+  std::vector<Eigen::Vector3d> start_; // points at the start (the tie's reference)
   std::vector<std::pair<std::size_t, double>> touched_;
   std::vector<Eigen::Vector3d> movedA_, movedB_;
 };

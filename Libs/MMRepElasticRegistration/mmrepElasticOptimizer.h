@@ -47,6 +47,9 @@ struct ElasticOptimizerOptions
   double controlPointTolerance = 0.5;  // mm
   double controlPointWeightCap = 1000; // weights double up to this
   double elementQualityFloor = 0.3;    // scaled Jacobian the guarded hexahedra keep (see above)
+  // Tie: μ |p − p₀|² per attracted point (p₀ = its start): the distance terms do not see sliding
+  // along a surface, so without it the greedy steps drift tissue tangentially. 0 = off.
+  double tieWeight = 0.0;
   std::function<void(double)> progress;
 };
 

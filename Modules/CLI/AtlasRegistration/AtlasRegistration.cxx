@@ -93,6 +93,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
   options.mapSpacing = args.Double("mapSpacing");
   options.controlPointWeight = args.Double("controlPointWeight");
   options.elementQualityFloor = args.Double("elementQualityFloor");
+  options.tieWeight = args.Double("tieWeight");
   options.symmetric = !args.Bool("asymmetric");
   options.progress = [&](double f) { ctx.progress.ReportRange(0.05, 0.9, f); };
   const auto result = mmrep::RegisterAtlas(atlas, atlasPlane, subject, options);

@@ -78,6 +78,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
   options.registration.mapSpacing = args.Double("mapSpacing");
   options.registration.controlPointWeight = args.Double("controlPointWeight");
   options.registration.elementQualityFloor = args.Double("elementQualityFloor");
+  options.registration.tieWeight = args.Double("tieWeight");
   options.refinement.elementQualityFloor = options.registration.elementQualityFloor;
   options.registration.symmetric = !args.Bool("asymmetric");
   options.refine = !args.Bool("noRefinement");
