@@ -23,8 +23,8 @@ std::string Describe(const std::string& name, const FacePoint& p)
   return s.str();
 }
 
-// Index of the next minimum (wantMin) or maximum of `v` from `start` walking by `step`, confirmed by
-// a change of at least `delta` after it. Returns -1 when the walk ends first.
+} // namespace
+
 int NextExtremum(const std::vector<double>& v, int start, int step, bool wantMin, double delta)
 {
   int best = start;
@@ -37,7 +37,6 @@ int NextExtremum(const std::vector<double>& v, int start, int step, bool wantMin
   }
   return -1;
 }
-} // namespace
 
 FacePoint SkinHit(const SurfaceRays& skin, const Eigen::Vector3d& centre, double theta, double phi)
 {
@@ -53,6 +52,142 @@ FacePoint SkinHit(const SurfaceRays& skin, const Eigen::Vector3d& centre, double
   if (theta == 0)
     p.local.x() = 0; // on the plane exactly
   return p;
+}
+
+void DetectOrbitAndMouthCorner(const SurfaceRays& skin, const SurfaceRays& bone, const Eigen::Vector3d& centre,
+                               FaceLandmarkSet& lm)
+{
+  // --- Left orbital opening: rays meeting no bone within 25 mm under the skin.
+  const double orbitDepth = 25.0;
+  const double da = 1.0 * kDeg;
+  const double phi0 = lm.nasion.phi - 16 * kDeg, theta0 = 4 * kDeg;
+  const int rows = 22, cols = 57; // phi: nasion -16 .. +5 deg; theta: 4 .. 60 deg
+  std::vector<FacePoint> hits(rows * cols);
+  std::vector<int> open(rows * cols, 0);
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c)
+    {
+      const FacePoint p = SkinHit(skin, centre, theta0 + c * da, phi0 + r * da);
+      const Eigen::Vector3d in = -RayDirection(p.theta, p.phi);
+      hits[r * cols + c] = p;
+      open[r * cols + c] = bone.First(p.local, p.local + orbitDepth * in) ? 0 : 1;
+    }
+  // Components (4-connected), labelled in scan order: deterministic.
+  std::vector<int> label(rows * cols, -1);
+  std::vector<std::vector<int>> comps;
+  for (int s = 0; s < rows * cols; ++s)
+  {
+    if (!open[s] || label[s] >= 0)
+      continue;
+    comps.emplace_back();
+    std::vector<int> stack{s};
+    label[s] = static_cast<int>(comps.size()) - 1;
+    while (!stack.empty())
+    {
+      const int q = stack.back();
+      stack.pop_back();
+      comps.back().push_back(q);
+      const int r = q / cols, c = q % cols;
+      const int nb[4][2] = {{r - 1, c}, {r + 1, c}, {r, c - 1}, {r, c + 1}};
+      for (const auto& n : nb)
+        if (n[0] >= 0 && n[0] < rows && n[1] >= 0 && n[1] < cols && open[n[0] * cols + n[1]] &&
+            label[n[0] * cols + n[1]] < 0)
+        {
+          label[n[0] * cols + n[1]] = label[s];
+          stack.push_back(n[0] * cols + n[1]);
+        }
+    }
+  }
+  // Expected eye centre: 32 mm lateral of the midline, 4 mm below the nasion.
+  const double eyeRadius = (lm.nasion.local - centre).norm();
+  const double seedTheta = std::atan2(32.0, lm.nasion.local.y() - centre.y() - 10.0);
+  const double seedPhi = lm.nasion.phi - 4.0 / eyeRadius;
+  int bestComp = -1;
+  double bestD = 1e300;
+  for (int k = 0; k < static_cast<int>(comps.size()); ++k)
+  {
+    if (comps[k].size() < 5)
+      continue;
+    for (int q : comps[k])
+    {
+      const double d = std::hypot(hits[q].theta - seedTheta, hits[q].phi - seedPhi);
+      if (d < bestD)
+      {
+        bestD = d;
+        bestComp = k;
+      }
+    }
+  }
+  if (bestComp < 0)
+    throw std::runtime_error("face landmarks: cannot find the left orbit (no bone-free region around the eye level)");
+  int rMin = rows, rMax = -1;
+  for (int q : comps[bestComp])
+  {
+    rMin = std::min(rMin, q / cols);
+    rMax = std::max(rMax, q / cols);
+  }
+  const int rMid = (rMin + rMax) / 2;
+  int cMin = cols, cMax = -1;
+  for (int q : comps[bestComp])
+    if (q / cols == rMid)
+    {
+      cMin = std::min(cMin, q % cols);
+      cMax = std::max(cMax, q % cols);
+    }
+  lm.orbitMedialTheta = theta0 + cMin * da;
+  lm.orbitLateralTheta = theta0 + cMax * da;
+  lm.orbitBottomPhi = phi0 + rMin * da;
+  lm.orbitTopPhi = phi0 + rMax * da;
+  const FacePoint& mid = hits[rMid * cols + (cMin + cMax) / 2];
+  lm.orbitCentre = mid;
+  const double rho = std::hypot(mid.local.x(), mid.local.y() - centre.y()); // distance to the vertical axis
+  const double phiMid = phi0 + rMid * da;
+  lm.eyeInner = SkinHit(skin, centre, lm.orbitMedialTheta + 3.0 / rho, phiMid);
+  lm.eyeOuter = SkinHit(skin, centre, lm.orbitLateralTheta - 6.0 / rho, phiMid + 1.0 / eyeRadius);
+
+  // --- Left mouth corner: follow the lip line laterally until the lips no longer bulge.
+  const double mouthRadius = (lm.stomion.local - centre).norm();
+  const double dPhi = 0.5 * kDeg, dTheta = 0.5 * kDeg;
+  const int halfRows = static_cast<int>(std::ceil(8.0 / mouthRadius / dPhi)); // +-8 mm around the line
+  const int bulgeRows = static_cast<int>(std::ceil(6.0 / mouthRadius / dPhi));
+  double linePhi = lm.stomion.phi;
+  double cornerTheta = -1;
+  std::ostringstream relief;
+  relief.precision(3);
+  for (int c = 0; c * dTheta <= 50 * kDeg; ++c)
+  {
+    const double theta = c * dTheta;
+    std::vector<double> r;
+    for (int k = -halfRows; k <= halfRows; ++k)
+      r.push_back((SkinHit(skin, centre, theta, linePhi + k * dPhi).local - centre).norm());
+    // The line moves at most 1 row per column, to the local radial minimum.
+    int line = halfRows;
+    for (int k = halfRows - 1; k <= halfRows + 1; ++k)
+      if (r[k] < r[line])
+        line = k;
+    double above = -1e300, below = -1e300;
+    for (int k = 1; k <= bulgeRows; ++k)
+    {
+      above = std::max(above, r[line + k]);
+      below = std::max(below, r[line - k]);
+    }
+    const double bulge = std::min(above, below) - r[line];
+    const double lateral = SkinHit(skin, centre, theta, linePhi).local.x();
+    if (c % 4 == 0)
+      relief << " " << lateral << ":" << bulge;
+    linePhi += (line - halfRows) * dPhi;
+    if (lateral >= 15.0 && bulge < 0.3)
+    {
+      cornerTheta = theta;
+      break;
+    }
+    if (lateral > 35.0)
+      break;
+  }
+  lm.log.push_back("lip-line relief (lateral mm: groove depth mm):" + relief.str());
+  if (cornerTheta < 0)
+    throw std::runtime_error("face landmarks: cannot find the left mouth corner (the lip line does not end within 35 mm)");
+  lm.lipCorner = SkinHit(skin, centre, cornerTheta, linePhi);
 }
 
 FaceLandmarkSet DetectFaceLandmarks(const SurfaceRays& skin, const SurfaceRays& bone, const Eigen::Vector3d& centre)
@@ -137,137 +272,7 @@ FaceLandmarkSet DetectFaceLandmarks(const SurfaceRays& skin, const SurfaceRays& 
   lm.pogonion = profile[pg];
   lm.nasion = profile[na];
 
-  // --- Left orbital opening: rays meeting no bone within 25 mm under the skin.
-  const double orbitDepth = 25.0;
-  const double da = 1.0 * kDeg;
-  const double phi0 = lm.nasion.phi - 16 * kDeg, theta0 = 4 * kDeg;
-  const int rows = 22, cols = 57; // phi: nasion -16 .. +5 deg; theta: 4 .. 60 deg
-  std::vector<FacePoint> hits(rows * cols);
-  std::vector<int> open(rows * cols, 0);
-  for (int r = 0; r < rows; ++r)
-    for (int c = 0; c < cols; ++c)
-    {
-      const FacePoint p = SkinHit(skin, centre, theta0 + c * da, phi0 + r * da);
-      const Eigen::Vector3d in = -RayDirection(p.theta, p.phi);
-      hits[r * cols + c] = p;
-      open[r * cols + c] = bone.First(p.local, p.local + orbitDepth * in) ? 0 : 1;
-    }
-  // Components (4-connected), labelled in scan order: deterministic.
-  std::vector<int> label(rows * cols, -1);
-  std::vector<std::vector<int>> comps;
-  for (int s = 0; s < rows * cols; ++s)
-  {
-    if (!open[s] || label[s] >= 0)
-      continue;
-    comps.emplace_back();
-    std::vector<int> stack{s};
-    label[s] = static_cast<int>(comps.size()) - 1;
-    while (!stack.empty())
-    {
-      const int q = stack.back();
-      stack.pop_back();
-      comps.back().push_back(q);
-      const int r = q / cols, c = q % cols;
-      const int nb[4][2] = {{r - 1, c}, {r + 1, c}, {r, c - 1}, {r, c + 1}};
-      for (const auto& n : nb)
-        if (n[0] >= 0 && n[0] < rows && n[1] >= 0 && n[1] < cols && open[n[0] * cols + n[1]] &&
-            label[n[0] * cols + n[1]] < 0)
-        {
-          label[n[0] * cols + n[1]] = label[s];
-          stack.push_back(n[0] * cols + n[1]);
-        }
-    }
-  }
-  // Expected eye centre: 32 mm lateral of the midline, 4 mm below the nasion.
-  const double eyeRadius = (lm.nasion.local - centre).norm();
-  const double seedTheta = std::atan2(32.0, lm.nasion.local.y() - centre.y() - 10.0);
-  const double seedPhi = lm.nasion.phi - 4.0 / eyeRadius;
-  int bestComp = -1;
-  double bestD = 1e300;
-  for (int k = 0; k < static_cast<int>(comps.size()); ++k)
-  {
-    if (comps[k].size() < 5)
-      continue;
-    for (int q : comps[k])
-    {
-      const double d = std::hypot(hits[q].theta - seedTheta, hits[q].phi - seedPhi);
-      if (d < bestD)
-      {
-        bestD = d;
-        bestComp = k;
-      }
-    }
-  }
-  if (bestComp < 0)
-    throw std::runtime_error("face atlas: cannot find the left orbit (no bone-free region around the eye level)");
-  int rMin = rows, rMax = -1;
-  for (int q : comps[bestComp])
-  {
-    rMin = std::min(rMin, q / cols);
-    rMax = std::max(rMax, q / cols);
-  }
-  const int rMid = (rMin + rMax) / 2;
-  int cMin = cols, cMax = -1;
-  for (int q : comps[bestComp])
-    if (q / cols == rMid)
-    {
-      cMin = std::min(cMin, q % cols);
-      cMax = std::max(cMax, q % cols);
-    }
-  lm.orbitMedialTheta = theta0 + cMin * da;
-  lm.orbitLateralTheta = theta0 + cMax * da;
-  lm.orbitBottomPhi = phi0 + rMin * da;
-  lm.orbitTopPhi = phi0 + rMax * da;
-  const FacePoint& mid = hits[rMid * cols + (cMin + cMax) / 2];
-  lm.orbitCentre = mid;
-  const double rho = std::hypot(mid.local.x(), mid.local.y() - centre.y()); // distance to the vertical axis
-  const double phiMid = phi0 + rMid * da;
-  lm.eyeInner = SkinHit(skin, centre, lm.orbitMedialTheta + 3.0 / rho, phiMid);
-  lm.eyeOuter = SkinHit(skin, centre, lm.orbitLateralTheta - 6.0 / rho, phiMid + 1.0 / eyeRadius);
-
-  // --- Left mouth corner: follow the lip line laterally until the lips no longer bulge.
-  const double mouthRadius = (lm.stomion.local - centre).norm();
-  const double dPhi = 0.5 * kDeg, dTheta = 0.5 * kDeg;
-  const int halfRows = static_cast<int>(std::ceil(8.0 / mouthRadius / dPhi)); // +-8 mm around the line
-  const int bulgeRows = static_cast<int>(std::ceil(6.0 / mouthRadius / dPhi));
-  double linePhi = lm.stomion.phi;
-  double cornerTheta = -1;
-  std::ostringstream relief;
-  relief.precision(3);
-  for (int c = 0; c * dTheta <= 50 * kDeg; ++c)
-  {
-    const double theta = c * dTheta;
-    std::vector<double> r;
-    for (int k = -halfRows; k <= halfRows; ++k)
-      r.push_back((SkinHit(skin, centre, theta, linePhi + k * dPhi).local - centre).norm());
-    // The line moves at most 1 row per column, to the local radial minimum.
-    int line = halfRows;
-    for (int k = halfRows - 1; k <= halfRows + 1; ++k)
-      if (r[k] < r[line])
-        line = k;
-    double above = -1e300, below = -1e300;
-    for (int k = 1; k <= bulgeRows; ++k)
-    {
-      above = std::max(above, r[line + k]);
-      below = std::max(below, r[line - k]);
-    }
-    const double bulge = std::min(above, below) - r[line];
-    const double lateral = SkinHit(skin, centre, theta, linePhi).local.x();
-    if (c % 4 == 0)
-      relief << " " << lateral << ":" << bulge;
-    linePhi += (line - halfRows) * dPhi;
-    if (lateral >= 15.0 && bulge < 0.3)
-    {
-      cornerTheta = theta;
-      break;
-    }
-    if (lateral > 35.0)
-      break;
-  }
-  lm.log.push_back("lip-line relief (lateral mm: groove depth mm):" + relief.str());
-  if (cornerTheta < 0)
-    throw std::runtime_error("face atlas: cannot find the left mouth corner (the lip line does not end within 35 mm)");
-  lm.lipCorner = SkinHit(skin, centre, cornerTheta, linePhi);
+  DetectOrbitAndMouthCorner(skin, bone, centre, lm);
 
   for (const auto& [name, p] :
        std::vector<std::pair<std::string, FacePoint>>{{"pronasale", lm.pronasale}, {"subnasale", lm.subnasale},

@@ -45,7 +45,17 @@ struct FaceLandmarkSet
 // Skin hit of the ray (theta, phi) from `centre` (the outermost crossing); throws when missed.
 FacePoint SkinHit(const SurfaceRays& skin, const Eigen::Vector3d& centre, double theta, double phi);
 
+// Index of the next minimum (wantMin) or maximum of `v` from `start` walking by `step`, confirmed by
+// a change of at least `delta` after it (the profile landmarks' rule). -1 when the walk ends first.
+int NextExtremum(const std::vector<double>& v, int start, int step, bool wantMin, double delta);
+
 // Throws std::runtime_error naming the landmark when the face does not show the expected shape.
 FaceLandmarkSet DetectFaceLandmarks(const SurfaceRays& skin, const SurfaceRays& bone, const Eigen::Vector3d& centre);
+
+// The orbit, eye-corner and mouth-corner rules alone, given the nasion and the stomion in `lm`
+// (DetectFaceLandmarks runs them after the profile; the control-point detector for other heads
+// reuses them). Throws std::runtime_error when the orbit or the mouth corner is not found.
+void DetectOrbitAndMouthCorner(const SurfaceRays& skin, const SurfaceRays& bone, const Eigen::Vector3d& centre,
+                               FaceLandmarkSet& lm);
 
 } // namespace mmrep

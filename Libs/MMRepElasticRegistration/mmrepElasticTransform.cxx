@@ -293,28 +293,32 @@ DisplacementField::Pointer ElasticTransform::ToDisplacementField(const itk::Imag
   field->SetSpacing(grid->GetSpacing());
   field->SetDirection(grid->GetDirection());
   field->Allocate();
-  // Voxels are independent: slabs of z run in parallel, the bytes do not depend on the split.
-  const auto size = field->GetLargestPossibleRegion().GetSize();
-  const long long slices = static_cast<long long>(size[2]);
+  FillDisplacementField(field, [this](const Eigen::Vector3d& x) { return Apply(x); });
+  return field;
+}
+
+void FillDisplacementField(DisplacementField* field, const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& map)
+{
+  const auto region = field->GetLargestPossibleRegion();
+  const long long slices = static_cast<long long>(region.GetSize(2));
   const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+  std::atomic<long long> next{0};
   std::vector<std::thread> pool;
-  std::atomic<long long> nextSlice{0};
   for (unsigned w = 0; w < threads; ++w)
     pool.emplace_back([&] {
-      for (long long z = nextSlice++; z < slices; z = nextSlice++)
+      for (long long z = next++; z < slices; z = next++)
       {
-        DisplacementField::RegionType slab = field->GetLargestPossibleRegion();
-        slab.SetIndex(2, z);
+        auto slab = region;
+        slab.SetIndex(2, region.GetIndex(2) + z);
         slab.SetSize(2, 1);
-        itk::ImageRegionIteratorWithIndex<DisplacementField> it(field, slab);
-        for (; !it.IsAtEnd(); ++it)
+        for (itk::ImageRegionIteratorWithIndex<DisplacementField> it(field, slab); !it.IsAtEnd(); ++it)
         {
           DisplacementField::PointType pt;
           field->TransformIndexToPhysicalPoint(it.GetIndex(), pt);
           const Eigen::Vector3d x(pt[0], pt[1], pt[2]);
-          const Eigen::Vector3d u = Apply(x) - x;
+          const Eigen::Vector3d u = map(x) - x;
           DisplacementField::PixelType v;
-          for (int a = 0; a < 3; ++a)
+          for (unsigned a = 0; a < 3; ++a)
             v[a] = static_cast<float>(u[a]);
           it.Set(v);
         }
@@ -322,7 +326,6 @@ DisplacementField::Pointer ElasticTransform::ToDisplacementField(const itk::Imag
     });
   for (auto& t : pool)
     t.join();
-  return field;
 }
 
 } // namespace mmrep

@@ -23,6 +23,8 @@
 // harden the inverse); to resample a subject volume into atlas space, use it as is.
 #pragma once
 
+#include <functional>
+
 #include "mmrepImageIO.h"
 
 #include <Eigen/Core>
@@ -114,5 +116,9 @@ private:
   std::vector<LevelIndex> index_;
   bool indexed_ = false;
 };
+
+// u(x) = map(x) − x at every voxel of the allocated `field` (float storage). Voxels are independent:
+// slabs of z run on up to 8 threads, and the bytes do not depend on the split.
+void FillDisplacementField(DisplacementField* field, const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& map);
 
 } // namespace mmrep

@@ -1,4 +1,5 @@
 #include "mmrepDisplacementFieldMap.h"
+#include "mmrepElasticTransform.h"
 
 #include <itkVectorLinearInterpolateImageFunction.h>
 
@@ -67,32 +68,7 @@ DisplacementField::Pointer SampleDisplacementField(const PointMap& map, const st
   field->SetOrigin(origin);
   field->SetSpacing(spacing);
   field->Allocate();
-  const long long slices = static_cast<long long>(region.GetSize(2));
-  const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
-  std::atomic<long long> next{0};
-  std::vector<std::thread> pool;
-  for (unsigned w = 0; w < threads; ++w)
-    pool.emplace_back([&] {
-      for (long long z = next++; z < slices; z = next++)
-      {
-        auto slab = region;
-        slab.SetIndex(2, z);
-        slab.SetSize(2, 1);
-        for (itk::ImageRegionIteratorWithIndex<DisplacementField> it(field, slab); !it.IsAtEnd(); ++it)
-        {
-          DisplacementField::PointType pt;
-          field->TransformIndexToPhysicalPoint(it.GetIndex(), pt);
-          const Point3 x(pt[0], pt[1], pt[2]);
-          const Point3 u = map(x) - x;
-          DisplacementField::PixelType v;
-          for (unsigned a = 0; a < 3; ++a)
-            v[a] = static_cast<float>(u[a]);
-          it.Set(v);
-        }
-      }
-    });
-  for (auto& t : pool)
-    t.join();
+  FillDisplacementField(field, map);
   return field;
 }
 

@@ -89,6 +89,23 @@ inline std::map<std::string, std::string> ReadReturnParameters(const std::filesy
   return values;
 }
 
+// A comma-separated vector return value ("x,y,z") as numbers.
+inline std::vector<double> ReturnVector(const std::map<std::string, std::string>& values, const std::string& name)
+{
+  std::vector<double> v;
+  std::istringstream s(values.at(name));
+  for (std::string item; std::getline(s, item, ',');)
+    v.push_back(std::stod(item));
+  return v;
+}
+
+// A PNG picture of some content: the PNG signature and more than 10 kB.
+inline bool IsPNG(const std::filesystem::path& path)
+{
+  const std::string bytes = Slurp(path);
+  return bytes.size() > 10000 && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0;
+}
+
 // A fresh empty directory under the system temp folder, removed at the end of the scope.
 class ScratchDirectory
 {

@@ -148,37 +148,6 @@ void WritePictures(const mmrep::FaceAtlas& atlas, const std::string& folder)
                              "atlas muscle tracks, one colour per muscle");
 }
 
-// Closes thin horizontal slits of the head mask: background runs of at most `maxRun` voxels along
-// the axial axis with tissue at both ends (the lip slit of a closed mouth, the eyelid slit). The
-// mouth is then closed at rest and the skin passes over the slit instead of diving into it.
-std::size_t CloseAxialSlits(mmrep::MaskImage* mask, int maxRun)
-{
-  const unsigned axis = mmrep::AxialAxis(mask);
-  const auto size = mask->GetLargestPossibleRegion().GetSize();
-  std::array<std::size_t, 3> stride{1, size[0], size[0] * size[1]};
-  unsigned char* data = mask->GetBufferPointer();
-  const unsigned a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
-  std::size_t filled = 0;
-  for (std::size_t p = 0; p < size[a1]; ++p)
-    for (std::size_t q = 0; q < size[a2]; ++q)
-    {
-      const std::size_t base = p * stride[a1] + q * stride[a2];
-      std::size_t lastTissue = std::numeric_limits<std::size_t>::max();
-      for (std::size_t k = 0; k < size[axis]; ++k)
-      {
-        if (!data[base + k * stride[axis]])
-          continue;
-        if (lastTissue != std::numeric_limits<std::size_t>::max() && k - lastTissue > 1 &&
-            k - lastTissue - 1 <= static_cast<std::size_t>(maxRun))
-          for (std::size_t g = lastTissue + 1; g < k; ++g, ++filled)
-            data[base + g * stride[axis]] = 1;
-        lastTissue = k;
-      }
-    }
-  mask->Modified();
-  return filled;
-}
-
 double Percentile(std::vector<double> v, double p)
 {
   std::sort(v.begin(), v.end());
@@ -248,7 +217,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
   seg.skinThreshold = thresholds.skin;
   seg.boneThreshold = thresholds.bone;
   const auto head = mmrep::SegmentHead(ct, seg, [&](double f) { ctx.progress.ReportRange(0.0, 0.3, f); });
-  const std::size_t slitVoxels = CloseAxialSlits(head.skin.GetPointer(), 2);
+  const std::size_t slitVoxels = mmrep::CloseAxialSlits(head.skin.GetPointer(), 2);
   std::cout << "Closed slits: " << slitVoxels << " voxels" << std::endl;
   auto skin = mmrep::ExtractSurface(mmrep::MaskedIntensities(ct, head.skin, thresholds.skin), thresholds.skin);
   auto skull = mmrep::ExtractSurface(mmrep::MaskedIntensities(ct, head.bone, thresholds.bone), thresholds.bone);

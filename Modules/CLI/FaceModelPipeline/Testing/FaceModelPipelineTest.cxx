@@ -34,12 +34,6 @@ namespace fs = std::filesystem;
 const std::string kCT = std::string(MMREP_SOURCE_DIR) + "/Resources/SampleData/cthead.nrrd";
 const std::string kPoints = std::string(MMREP_SOURCE_DIR) + "/Resources/SampleData/cthead.ControlPoints.mrk.json";
 
-bool IsPNG(const fs::path& path)
-{
-  const std::string bytes = Slurp(path);
-  return bytes.size() > 10000 && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0;
-}
-
 int Shell(const std::string& command)
 {
   const int status = std::system((command + " > /dev/null 2>&1").c_str());
@@ -66,15 +60,6 @@ double MeanDistanceWithVTK(const FEMesh& mesh, const std::string& set, const fs:
     sum += std::sqrt(d2);
   }
   return sum / static_cast<double>(mesh.nodeSets.at(set).size());
-}
-
-std::vector<double> Vector(const std::map<std::string, std::string>& values, const std::string& name)
-{
-  std::vector<double> v;
-  std::istringstream s(values.at(name));
-  for (std::string item; std::getline(s, item, ',');)
-    v.push_back(std::stod(item));
-  return v;
 }
 
 TEST(FaceModelPipelineModule, BundledCTGivesAValidModelReportAndPictures)
@@ -196,7 +181,7 @@ TEST(FaceModelPipelineModule, SpeakerModelMuscleActivationWithCalculiX)
   ASSERT_EQ(z.exitCode, 0) << z.err;
   EXPECT_NE(z.out.find("CalculiX: converged"), std::string::npos);
   const auto zv = ReadReturnParameters(zygRet);
-  const auto corner = Vector(zv, "leftLipCornerDisplacement");
+  const auto corner = ReturnVector(zv, "leftLipCornerDisplacement");
   std::printf("speaker model, ZygomaticusMajor_L: LeftLipCorner lateral (+x) %.3f, superior (+z) %.3f mm; ccx %s s\n", corner[0],
               corner[2], zv.at("ccxSeconds").c_str());
   EXPECT_GT(corner[0], 0.05); // patient left = lateral for the left corner
@@ -212,7 +197,7 @@ TEST(FaceModelPipelineModule, SpeakerModelMuscleActivationWithCalculiX)
      "--returnparameterfile", oopRet});
   ASSERT_EQ(o.exitCode, 0) << o.err;
   const auto ov = ReadReturnParameters(oopRet);
-  const auto upper = Vector(ov, "upperLipCenterDisplacement"), lower = Vector(ov, "lowerLipCenterDisplacement");
+  const auto upper = ReturnVector(ov, "upperLipCenterDisplacement"), lower = ReturnVector(ov, "lowerLipCenterDisplacement");
   std::printf("speaker model, orbicularis oris peripheralis: upper lip anterior %.3f mm, lower lip anterior %.3f mm, gap change "
               "%.3f mm\n",
               -upper[1], -lower[1], upper[2] - lower[2]);

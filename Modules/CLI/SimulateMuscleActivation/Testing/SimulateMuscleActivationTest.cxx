@@ -22,21 +22,6 @@ namespace fs = std::filesystem;
 
 const std::string kAtlas = std::string(MMREP_SOURCE_DIR) + "/Resources/Atlas/FaceAtlas.vtu";
 
-std::vector<double> Vector(const std::map<std::string, std::string>& values, const std::string& name)
-{
-  std::vector<double> v;
-  std::istringstream s(values.at(name));
-  for (std::string item; std::getline(s, item, ',');)
-    v.push_back(std::stod(item));
-  return v;
-}
-
-bool IsPNG(const std::string& path)
-{
-  const std::string bytes = Slurp(path);
-  return bytes.size() > 10000 && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0;
-}
-
 // Displacement of the skin node nearest to a landmark, read from the written .vtu: a check of the
 // module's landmark interpolation that does not use it.
 Point3 NearestSkinNodeDisplacement(const std::string& vtu, const FEMesh& rest, const std::string& landmark)
@@ -72,7 +57,7 @@ TEST(SimulateMuscleActivationModule, ZygomaticusMajorLeftRaisesLeftMouthCornerLa
   std::printf("%s", run.out.substr(run.out.find("CalculiX:")).c_str());
   EXPECT_NE(run.out.find("CalculiX: converged"), std::string::npos);
   const auto values = ReadReturnParameters(ret);
-  const std::vector<double> corner = Vector(values, "leftLipCornerDisplacement");
+  const std::vector<double> corner = ReturnVector(values, "leftLipCornerDisplacement");
   ASSERT_EQ(corner.size(), 3u);
   std::printf("LeftLipCorner: lateral (+x) %.3f mm, superior (+z) %.3f mm, |u| %.3f mm; ccx %s s, %s increments\n",
               corner[0], corner[2], std::sqrt(corner[0] * corner[0] + corner[1] * corner[1] + corner[2] * corner[2]),
@@ -112,8 +97,8 @@ TEST(SimulateMuscleActivationModule, OrbicularisOrisPeripheralisProtrudesAndClos
   ASSERT_EQ(run.exitCode, 0) << run.err;
   std::printf("%s", run.out.substr(run.out.find("CalculiX:")).c_str());
   const auto values = ReadReturnParameters(ret);
-  const std::vector<double> upper = Vector(values, "upperLipCenterDisplacement");
-  const std::vector<double> lower = Vector(values, "lowerLipCenterDisplacement");
+  const std::vector<double> upper = ReturnVector(values, "upperLipCenterDisplacement");
+  const std::vector<double> lower = ReturnVector(values, "lowerLipCenterDisplacement");
   std::printf("UpperLipCenter: anterior (-y) %.3f mm, superior %.3f mm; LowerLipCenter: anterior %.3f mm, superior %.3f mm; "
               "lip gap change %.3f mm\n",
               -upper[1], upper[2], -lower[1], lower[2], upper[2] - lower[2]);
