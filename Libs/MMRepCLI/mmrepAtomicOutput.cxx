@@ -3,6 +3,7 @@
 
 #include <atomic>
 #include <filesystem>
+#include <fstream>
 #include <system_error>
 #include <unistd.h>
 
@@ -69,6 +70,14 @@ void AtomicOutput::Commit()
   fs::rename(temp_, final_, ec);
   if (ec) throw ModuleError("cannot write '" + final_ + "': " + ec.message());
   committed_ = true;
+}
+
+void AtomicOutput::WriteText(const std::string& text) const
+{
+  std::ofstream f(temp_, std::ios::binary);
+  f << text;
+  if (!f)
+    throw ModuleError(final_ + ": cannot write");
 }
 
 } // namespace mmrep::cli

@@ -165,6 +165,8 @@ public:
   const std::string& TempPath() const { return temp_; }
   const std::string& FinalPath() const { return final_; }
   void Commit(); // throws ModuleError if the rename fails
+  // Writes `text` to the temporary file (a report); throws ModuleError if it cannot.
+  void WriteText(const std::string& text) const;
 
 private:
   std::string final_, temp_;

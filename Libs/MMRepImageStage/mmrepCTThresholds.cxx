@@ -101,4 +101,13 @@ CTThresholds ChooseThresholds(const CTImage* image, ThresholdMode mode, double s
   return result;
 }
 
+ThresholdMode ThresholdModeFromName(const std::string& name)
+{
+  if (name == "hounsfield")
+    return ThresholdMode::Hounsfield;
+  if (name == "histogram")
+    return ThresholdMode::Histogram;
+  return ThresholdMode::Automatic;
+}
+
 } // namespace mmrep

@@ -27,6 +27,9 @@ enum class ThresholdMode
   Histogram   // three-class Otsu on the histogram
 };
 
+// The modules' names of the modes: "hounsfield", "histogram", anything else automatic.
+ThresholdMode ThresholdModeFromName(const std::string& name);
+
 constexpr double kHounsfieldSkinThreshold = -300.0;
 constexpr double kHounsfieldBoneThreshold = 300.0;
 

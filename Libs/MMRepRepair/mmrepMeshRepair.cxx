@@ -17,6 +17,7 @@
 #include <vtkHexahedron.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
+#include <vtkIdList.h>
 #include <vtkStaticPointLocator.h>
 #include <vtkTetra.h>
 #include <vtkWedge.h>
@@ -238,7 +239,9 @@ private:
 
   // Symmetric input: every node of a solid element has a mirror node of a solid element (same
   // surface kind) within 1e-7 of the mesh size. Nodes of no solid element (embedded muscle points,
-  // which may coincide pairwise) never move in the search and are left out.
+  // which may coincide pairwise) never move in the search and are left out. Coincident nodes (a
+  // tangle can project two skin nodes onto one surface point) make the position ambiguous: the
+  // candidate whose neighbourhood (centroid of its elements' nodes) is the mirror of the node's wins.
   void FindMirrorPairs()
   {
     const std::size_t n = mesh_.nodes.size();
@@ -260,16 +263,40 @@ private:
     locator->BuildLocator();
     std::vector<std::int32_t> partner(n);
     std::iota(partner.begin(), partner.end(), 0);
+    auto neighbourhood = [&](std::size_t i) {
+      Point3 sum = Point3::Zero();
+      int count = 0;
+      for (std::size_t a = offsets_[i]; a < offsets_[i + 1]; ++a)
+      {
+        const Element& e = mesh_.elements[adjacent_[a]];
+        for (int k = 0; k < NodeCount(e.type); ++k, ++count)
+          sum += mesh_.nodes[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])];
+      }
+      return Point3(sum / std::max(count, 1));
+    };
+    vtkNew<vtkIdList> candidates;
     for (const std::size_t i : ids)
     {
       const Point3 mirror = plane_.Mirror(mesh_.nodes[i]);
-      const vtkIdType k = locator->FindClosestPoint(mirror.data());
-      if (k < 0)
-        return;
-      const std::size_t j = ids[static_cast<std::size_t>(k)];
-      if ((mesh_.nodes[j] - mirror).norm() > tolerance || surface_[j] != surface_[i])
+      locator->FindPointsWithinRadius(tolerance, mirror.data(), candidates);
+      std::size_t best = n;
+      double bestMismatch = std::numeric_limits<double>::infinity();
+      for (vtkIdType c = 0; c < candidates->GetNumberOfIds(); ++c)
+      {
+        const std::size_t j = ids[static_cast<std::size_t>(candidates->GetId(c))];
+        if (surface_[j] != surface_[i])
+          continue;
+        const double mismatch =
+          candidates->GetNumberOfIds() == 1 ? 0.0 : (plane_.Mirror(neighbourhood(i)) - neighbourhood(j)).norm();
+        if (mismatch < bestMismatch || (mismatch == bestMismatch && j < best))
+        {
+          best = j;
+          bestMismatch = mismatch;
+        }
+      }
+      if (best == n)
         return; // not symmetric: nodes move one by one
-      partner[i] = static_cast<std::int32_t>(j);
+      partner[i] = static_cast<std::int32_t>(best);
     }
     for (std::size_t i = 0; i < n; ++i)
       if (partner[partner[i]] != static_cast<std::int32_t>(i))

@@ -1,5 +1,7 @@
 #include "mmrepSurfaceProjector.h"
 
+#include <vtkSMPTools.h>
+
 #include <Eigen/Geometry>
 #include <vtkCellArray.h>
 #include <vtkNew.h>
@@ -21,7 +23,7 @@ SurfaceProjector::SurfaceProjector(vtkPolyData* surface)
   surface_ = surface;
   locator_ = vtkSmartPointer<vtkStaticCellLocator>::New();
   locator_->SetDataSet(surface_);
-  locator_->BuildLocator();
+  BuildLocatorSequentially(locator_);
   cell_ = vtkSmartPointer<vtkGenericCell>::New();
 }
 
@@ -77,6 +79,11 @@ const std::vector<std::array<int, 4>>& Faces(ElementType type)
   }
 }
 } // namespace
+
+void BuildLocatorSequentially(vtkAbstractCellLocator* locator)
+{
+  vtkSMPTools::LocalScope(vtkSMPTools::Config{std::string("Sequential")}, [&] { locator->BuildLocator(); });
+}
 
 vtkSmartPointer<vtkPolyData> BoundarySurface(const FEMesh& mesh, const std::vector<char>* nodeMask)
 {

@@ -4,6 +4,7 @@
 
 #include "mmrepFEMesh.h"
 
+#include <vtkAbstractCellLocator.h>
 #include <vtkGenericCell.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -29,6 +30,12 @@ private:
   vtkSmartPointer<vtkStaticCellLocator> locator_;
   vtkSmartPointer<vtkGenericCell> cell_; // scratch cell: the projector is not thread-safe
 };
+
+// Builds a VTK static locator with VTK's SMP tools in their sequential backend. The parallel build
+// orders the cells of a bin differently from run to run, and that order decides which of two
+// equidistant cells FindClosestPoint returns; ties are common here (points on the symmetry plane
+// of a mirror-symmetric surface), so a parallel build makes projections, and repairs, vary.
+void BuildLocatorSequentially(vtkAbstractCellLocator* locator);
 
 // Boundary faces of the mesh's solid elements (faces used by one element only), quads split into
 // two triangles; only faces whose nodes all have nodeMask[node] != 0 when a mask is given.

@@ -9,6 +9,7 @@
 //
 //   RegistrationBenchmark [--quick]   (--quick: one synthetic subject, no scaling runs)
 #include "RegistrationBenchmarkSubjects.h"
+#include "mmrepJacobianSampling.h"
 
 #include "mmrepAtlasRegistration.h"
 #include "mmrepFEMeshIO.h"
@@ -62,23 +63,6 @@ std::vector<std::pair<std::size_t, std::size_t>> MirrorPairs(const mmrep::FEMesh
   return pairs;
 }
 
-double MinDetJ(const mmrep::ElasticTransform& t, int n)
-{
-  const auto& level = t.levels.back();
-  const Eigen::Vector3d lo = level.boxMin, extent = level.h * level.cells;
-  const Eigen::Matrix3d preInverse = t.preLinear.inverse();
-  double minDet = 1e300;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k)
-      {
-        const Eigen::Vector3d f = lo + Eigen::Vector3d((i + 0.5) / n * extent.x(), (j + 0.5) / n * extent.y(),
-                                                       (k + 0.5) / n * extent.z());
-        const Eigen::Vector3d x = preInverse * (t.ToWorld(f) - t.preTranslation);
-        minDet = std::min(minDet, t.Jacobian(x).determinant() / t.preLinear.determinant());
-      }
-  return minDet;
-}
 
 void Row(const char* what, const mmrep::SurfaceErrorStatistics& s)
 {
@@ -197,19 +181,8 @@ Outcome RunSubject(const Subject& s, const mmrep::FEMesh& atlas, const mmrep::Pl
                 offset);
   }
   const auto t2 = Clock::now();
-  const double detR = MinDetJ(r.transform, 40);
-  double detQ = 1e300;
-  {
-    const int n = 40;
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j)
-        for (int k = 0; k < n; ++k)
-        {
-          const Eigen::Vector3d f = q.boxMin + (q.boxMax - q.boxMin).cwiseProduct(
-                                                 Eigen::Vector3d((i + 0.5) / n, (j + 0.5) / n, (k + 0.5) / n));
-          detQ = std::min(detQ, q.transform.Jacobian(q.transform.ToWorld(f)).determinant());
-        }
-  }
+  const double detR = mmrep::testing::MinimumJacobianDeterminantOverGrid(r.transform, 40);
+  const double detQ = mmrep::testing::MinimumJacobianDeterminant(q.transform, q.boxMin, q.boxMax, 40);
   double asym = 0, scale = 0;
   for (const auto& [a, b] : pairs)
   {

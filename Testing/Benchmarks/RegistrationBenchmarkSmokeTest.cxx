@@ -4,6 +4,7 @@
 // box bit-identical. Accuracy bounds here are regression bounds at the measured figures (see
 // Libs/MMRepElasticRegistration/README.md), not the targets.
 #include "RegistrationBenchmarkSubjects.h"
+#include "mmrepJacobianSampling.h"
 
 #include "mmrepAtlasRegistration.h"
 #include "mmrepFEMeshIO.h"
@@ -93,22 +94,8 @@ TEST(RegistrationSmoke, ShippedControlPointsFollowTheAtlasRules)
 TEST(RegistrationSmoke, HeadsqRegistrationDoesNotFold)
 {
   const auto& d = Data();
-  const auto& t = d.r.transform;
-  const auto& level = t.levels.back();
-  const Eigen::Vector3d lo = level.boxMin, extent = level.h * level.cells;
-  const Eigen::Matrix3d preInverse = t.preLinear.inverse();
-  double minR = 1e300, minQ = 1e300;
-  const int n = 30;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k)
-      {
-        const Eigen::Vector3d u((i + 0.5) / n, (j + 0.5) / n, (k + 0.5) / n);
-        const Eigen::Vector3d x = preInverse * (t.ToWorld(lo + extent.cwiseProduct(u)) - t.preTranslation);
-        minR = std::min(minR, t.Jacobian(x).determinant() / t.preLinear.determinant());
-        const Eigen::Vector3d f = d.q.boxMin + (d.q.boxMax - d.q.boxMin).cwiseProduct(u);
-        minQ = std::min(minQ, d.q.transform.Jacobian(d.q.transform.ToWorld(f)).determinant());
-      }
+  const double minR = mmrep::testing::MinimumJacobianDeterminantOverGrid(d.r.transform, 30);
+  const double minQ = mmrep::testing::MinimumJacobianDeterminant(d.q.transform, d.q.boxMin, d.q.boxMax, 30);
   std::cout << "min det J: R " << minR << ", Q " << minQ << std::endl;
   EXPECT_GT(minR, 0.0);
   EXPECT_GT(minQ, 0.0);

@@ -2,6 +2,7 @@
 // non-folding, exact symmetry, the displacement field, and the local refinement.
 #include "mmrepAtlasRegistration.h"
 #include "mmrepElasticTestData.h"
+#include "mmrepJacobianSampling.h"
 #include "mmrepMeshQuality.h"
 
 #include <gtest/gtest.h>
@@ -103,20 +104,7 @@ TEST(ElasticRegistration, JacobianIsPositiveEverywhereInTheGrid)
   const auto& t = Data().registration.transform;
   ASSERT_FALSE(t.levels.empty());
   // 40³ samples over the grid box (frame), mapped back to atlas space through the similarity.
-  const auto& level = t.levels.back();
-  const Eigen::Vector3d lo = level.boxMin, extent = level.h * level.cells;
-  const Eigen::Matrix3d preInverse = t.preLinear.inverse();
-  double minDet = 1e9;
-  const int n = 40;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k)
-      {
-        const Eigen::Vector3d f = lo + Eigen::Vector3d((i + 0.5) / n * extent.x(), (j + 0.5) / n * extent.y(),
-                                                       (k + 0.5) / n * extent.z());
-        const Eigen::Vector3d x = preInverse * (t.ToWorld(f) - t.preTranslation);
-        minDet = std::min(minDet, t.Jacobian(x).determinant() / t.preLinear.determinant());
-      }
+  const double minDet = mmrep::testing::MinimumJacobianDeterminantOverGrid(t, 40);
   std::cout << "min det J of the elastic part over the grid: " << minDet << std::endl;
   EXPECT_GT(minDet, 0.0);
 }

@@ -29,16 +29,6 @@ const mmrep::testing::MeshTangleContext& Context()
   return context;
 }
 
-RepairOptions Options(const mmrep::testing::MeshTangleContext& c)
-{
-  RepairOptions o;
-  o.skinSurface = c.skin;
-  o.skullSurface = c.skull;
-  o.hasSymmetryPlane = true;
-  o.symmetryPlane = c.plane;
-  return o;
-}
-
 // Smallest scaled Jacobian (and inverted count) over the hexahedra, from VTK's own filter.
 std::pair<double, int> VTKMinimum(const FEMesh& mesh)
 {
@@ -65,7 +55,7 @@ TEST(RepairAtlas, ShippedAtlasIsSymmetricAndUnchangedByRepair)
   ASSERT_FALSE(c.partner.empty()) << "the shipped atlas should be mirror symmetric";
   EXPECT_LT(mmrep::testing::SymmetryError(c.mesh, c), 1e-8);
   FEMesh mesh = c.mesh;
-  const RepairReport report = RepairMesh(mesh, Options(c));
+  const RepairReport report = RepairMesh(mesh, mmrep::testing::TangleRepairOptions(c));
   EXPECT_TRUE(report.success);
   EXPECT_EQ(report.movedNodes, 0u);
   for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
@@ -97,7 +87,7 @@ TEST(RepairAtlas, TanglesRepairedAccuratelyAndSymmetrically)
     const SurfaceDistance skullBefore = MeasureSurfaceDistance(mesh, "skull", c.skull);
     EXPECT_LT(skinBefore.max, 1e-6); // the generator leaves surface nodes on their surfaces
 
-    const RepairReport report = RepairMesh(mesh, Options(c));
+    const RepairReport report = RepairMesh(mesh, mmrep::testing::TangleRepairOptions(c));
     EXPECT_GT(report.movedNodes, 0u);
     const auto [minAfter, invertedAfter] = VTKMinimum(mesh);
     EXPECT_NEAR(report.minScaledJacobianAfter, minAfter, 1e-12);

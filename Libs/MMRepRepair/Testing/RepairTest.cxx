@@ -278,6 +278,38 @@ TEST(RepairMesh, SymmetricInputStaysSymmetric)
     }
 }
 
+// Tangled inputs can hold coincident nodes (two skin nodes projected onto the same surface point):
+// the mirror partner of such a node is ambiguous by position alone, and the repair must still
+// find the mirror pairs (by their neighbourhoods) and keep the mesh symmetric.
+TEST(RepairMesh, SymmetricInputWithCoincidentNodesStaysSymmetric)
+{
+  const ShellAtlas& atlas = Atlas();
+  const std::vector<std::int32_t> partner = GridPartners(atlas);
+  TangleOptions t;
+  t.seed = 4, t.symmetric = true, t.noise = 0.15, t.folds = 3, t.warp = 1;
+  FEMesh mesh = Tangle(atlas, t);
+  const auto& skin = mesh.nodeSets.at("skin");
+  std::size_t pairs = 0;
+  for (const auto a : skin)
+  {
+    const Eigen::Vector3i c = atlas.grid[static_cast<std::size_t>(a)];
+    if (c.x() != 3 || c.y() % 6 != 3)
+      continue;
+    const auto b = std::find_if(skin.begin(), skin.end(), [&](std::int32_t n) {
+      return atlas.grid[static_cast<std::size_t>(n)] == Eigen::Vector3i(4, c.y(), c.z());
+    });
+    ASSERT_NE(b, skin.end());
+    mesh.nodes[static_cast<std::size_t>(*b)] = mesh.nodes[static_cast<std::size_t>(a)];
+    mesh.nodes[static_cast<std::size_t>(partner[*b])] = mesh.nodes[static_cast<std::size_t>(partner[a])];
+    ++pairs;
+  }
+  ASSERT_GE(pairs, 2u);
+  ASSERT_LT(SymmetryError(mesh, Plane{}, partner), 1e-12);
+  const RepairReport report = RepairMesh(mesh, WithSurfaces(atlas, true));
+  EXPECT_TRUE(report.symmetricPairs);
+  EXPECT_LT(SymmetryError(mesh, Plane{}, partner), 1e-9);
+}
+
 TEST(RepairMesh, HopelessElementFailsAndIsListed)
 {
   const ShellAtlas& atlas = Atlas();

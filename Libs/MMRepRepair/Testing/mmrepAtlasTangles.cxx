@@ -1,4 +1,5 @@
 #include "mmrepAtlasTangles.h"
+#include "mmrepSurfaceProjector.h"
 
 #include "mmrepFEMeshIO.h"
 #include "mmrepSurfaceIO.h"
@@ -65,7 +66,7 @@ vtkSmartPointer<vtkStaticCellLocator> Locator(vtkPolyData* surface)
     throw std::invalid_argument("atlas tangles: a reference surface is empty");
   auto locator = vtkSmartPointer<vtkStaticCellLocator>::New();
   locator->SetDataSet(surface);
-  locator->BuildLocator();
+  BuildLocatorSequentially(locator); // the same projections on every run (mmrepSurfaceProjector.h)
   return locator;
 }
 
@@ -440,6 +441,16 @@ double SymmetryError(const FEMesh& mesh, const MeshTangleContext& c)
     if (!c.neighbours[i].empty()) // nodes of solid elements (embedded muscle points follow them)
     worst = std::max(worst, (c.plane.Mirror(mesh.nodes[i]) - mesh.nodes[c.partner[i]]).norm());
   return worst / c.diagonal;
+}
+
+RepairOptions TangleRepairOptions(const MeshTangleContext& c)
+{
+  RepairOptions o;
+  o.skinSurface = c.skin;
+  o.skullSurface = c.skull;
+  o.hasSymmetryPlane = true;
+  o.symmetryPlane = c.plane;
+  return o;
 }
 
 } // namespace mmrep::testing

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "mmrepFEMesh.h"
+#include "mmrepMeshRepair.h"
 #include "mmrepSymmetryPlane.h"
 #include "mmrepTangledMeshGenerator.h"
 
@@ -45,6 +46,9 @@ struct MeshTangleContext
 // Reads the atlas mesh and surfaces (.vtu, .vtp). Throws std::runtime_error on unreadable files.
 MeshTangleContext LoadTangleContext(const std::string& meshPath, const std::string& skinPath,
                                     const std::string& skullPath);
+
+// Repair options for a tangle of the context's mesh: its skin and skull surfaces and its plane.
+RepairOptions TangleRepairOptions(const MeshTangleContext& c);
 MeshTangleContext MakeTangleContext(FEMesh mesh, vtkSmartPointer<vtkPolyData> skin, vtkSmartPointer<vtkPolyData> skull);
 
 // The mesh with perturbed nodes (TangleOptions: noise and warp in element sizes, fold count, seed,

@@ -125,13 +125,9 @@ void Run(mmrep::cli::ModuleContext& ctx)
   }
   if (reportOut)
   {
-    std::ofstream f(reportOut->TempPath());
-    if (mmrep::cli::FileExtension(reportOut->FinalPath()) == ".md")
-      f << result.report.ToMarkdown("Atlas registration (R)");
-    else
-      f << result.report.ToJson() << "\n";
-    if (!f)
-      throw ModuleError(reportOut->FinalPath() + ": cannot write the report");
+    reportOut->WriteText(mmrep::cli::FileExtension(reportOut->FinalPath()) == ".md"
+                           ? result.report.ToMarkdown("Atlas registration (R)")
+                           : result.report.ToJson() + "\n");
   }
   for (auto& o : outputs)
     o->Commit();

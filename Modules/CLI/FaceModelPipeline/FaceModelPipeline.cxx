@@ -27,15 +27,6 @@ namespace
 using mmrep::cli::ModuleError;
 namespace fs = std::filesystem;
 
-mmrep::ThresholdMode ParseMode(const std::string& s)
-{
-  if (s == "hounsfield")
-    return mmrep::ThresholdMode::Hounsfield;
-  if (s == "histogram")
-    return mmrep::ThresholdMode::Histogram;
-  return mmrep::ThresholdMode::Automatic;
-}
-
 void WriteText(const fs::path& path, const std::string& text)
 {
   std::ofstream f(path, std::ios::binary);
@@ -69,7 +60,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
   ctx.progress.Report(0.05);
 
   mmrep::FaceModelOptions options;
-  options.thresholdMode = ParseMode(args.String("thresholdMode"));
+  options.thresholdMode = mmrep::ThresholdModeFromName(args.String("thresholdMode"));
   if (args.Given("skinThreshold"))
     options.skinThreshold = args.Double("skinThreshold");
   if (args.Given("boneThreshold"))

@@ -72,13 +72,8 @@ void Run(mmrep::cli::ModuleContext& ctx)
                               {"seconds", result.after.seconds},
                               {"stepsPerLevel", result.after.stepsPerLevel},
                               {"sweepsPerLevel", result.after.sweepsPerLevel}};
-    std::ofstream f(reportOut->TempPath());
-    if (markdown)
-      f << result.Report().ToMarkdown("Local refinement (Q) of node set '" + options.regionSet + "'");
-    else
-      f << j.dump(2) << "\n";
-    if (!f)
-      throw ModuleError(reportOut->FinalPath() + ": cannot write the report");
+    reportOut->WriteText(markdown ? result.Report().ToMarkdown("Local refinement (Q) of node set '" + options.regionSet + "'")
+                                  : j.dump(2) + "\n");
   }
   meshOut.Commit();
   if (reportOut)

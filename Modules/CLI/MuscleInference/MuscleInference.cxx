@@ -62,10 +62,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
                               {"pointsInAnotherElement", report.changedElement},
                               {"insertions", insertions},
                               {"units", "LPS mm"}};
-    std::ofstream f(reportOut->TempPath());
-    f << j.dump(2) << "\n";
-    if (!f)
-      throw ModuleError(reportOut->FinalPath() + ": cannot write the report");
+    reportOut->WriteText(j.dump(2) + "\n");
   }
   meshOut.Commit();
   if (reportOut)

@@ -17,15 +17,6 @@ extern const char SkinSkullSurfacesXML[];
 
 namespace
 {
-mmrep::ThresholdMode ParseMode(const std::string& s)
-{
-  if (s == "hounsfield")
-    return mmrep::ThresholdMode::Hounsfield;
-  if (s == "histogram")
-    return mmrep::ThresholdMode::Histogram;
-  return mmrep::ThresholdMode::Automatic;
-}
-
 double OptionalDouble(const mmrep::cli::Arguments& args, const std::string& name)
 {
   return args.Given(name) ? args.Double(name) : std::numeric_limits<double>::quiet_NaN();
@@ -57,7 +48,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
   const auto ct = mmrep::ReadCTImage(args.String("inputVolume"));
   ctx.progress.Report(0.1);
 
-  const auto thresholds = mmrep::ChooseThresholds(ct, ParseMode(args.String("thresholdMode")),
+  const auto thresholds = mmrep::ChooseThresholds(ct, mmrep::ThresholdModeFromName(args.String("thresholdMode")),
                                                   OptionalDouble(args, "skinThreshold"),
                                                   OptionalDouble(args, "boneThreshold"));
   std::cout << "Thresholds (" << thresholds.source << "): skin " << thresholds.skin << ", bone " << thresholds.bone
