@@ -23,10 +23,16 @@ namespace mmrep
 
 namespace
 {
+// Nodes within this distance (mm) of the plane count as plane nodes (a symmetric atlas has them on it
+// to rounding).
+constexpr double kPlaneTolerance = 1e-3;
+
 // Mesh guard: every node of a hexahedron not yet tracked becomes a passive point, and the
 // hexahedra are given over point indices (mmrepElasticOptimizer.h says why).
+// `innerMap(node)` gives the pointMap of a node that is not tracked yet (−1 passive, −2 held).
 void AddMeshGuard(const FEMesh& mesh, const std::vector<std::int32_t>& trackedNodes,
-                  const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& toFrame, ElasticProblem& problem)
+                  const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& toFrame, ElasticProblem& problem,
+                  const std::function<int(std::size_t)>& innerMap = [](std::size_t) { return -1; })
 {
   std::vector<int> pointOf(mesh.nodes.size(), -1);
   for (std::size_t k = 0; k < trackedNodes.size(); ++k)
@@ -44,7 +50,7 @@ void AddMeshGuard(const FEMesh& mesh, const std::vector<std::int32_t>& trackedNo
       {
         pointOf[v] = static_cast<int>(problem.points.size());
         problem.points.push_back(toFrame(mesh.nodes[v]));
-        problem.pointMap.push_back(-1);
+        problem.pointMap.push_back(innerMap(v));
       }
       h[c] = pointOf[v];
     }
@@ -105,9 +111,10 @@ std::vector<std::int32_t> Intersection(const std::vector<std::int32_t>& a, const
   return r;
 }
 
-int AutomaticLevel(double smallestExtent, double spacing)
+// The finest level whose smallest cell is at least `cellsPerSpacing` map voxels.
+int AutomaticLevel(double smallestExtent, double spacing, double cellsPerSpacing)
 {
-  const double ratio = smallestExtent / (2.0 * spacing);
+  const double ratio = smallestExtent / (cellsPerSpacing * spacing);
   return std::clamp(static_cast<int>(std::floor(std::log2(std::max(ratio, 1.0)))), 1, 8);
 }
 
@@ -341,6 +348,22 @@ void AddRefinementStage(RegistrationReport& report, const LocalRefinementResult&
   report.stages.push_back(s);
 }
 
+void SetSymmetryMode(AtlasRegistrationOptions& options, const std::string& mode)
+{
+  if (mode == "half-face" || mode == "averaged" || mode == "full")
+  {
+    options.symmetric = mode != "full";
+    options.halfFace = mode == "half-face";
+    return;
+  }
+  throw std::invalid_argument("symmetry: '" + mode + "' is not a mode (half-face, averaged or full)");
+}
+
+std::string SymmetryModeName(const AtlasRegistrationOptions& options)
+{
+  return !options.symmetric ? "full" : options.halfFace ? "half-face" : "averaged";
+}
+
 AtlasRegistrationResult RegisterAtlas(const FEMesh& atlas, const Plane& atlasPlane, const SubjectData& subject,
                                       const AtlasRegistrationOptions& options)
 {
@@ -459,21 +482,28 @@ AtlasRegistrationResult RegisterAtlas(const FEMesh& atlas, const Plane& atlasPla
   problem.maps.emplace_back(skinMap.GetPointer());
   problem.maps.emplace_back(skullMap.GetPointer());
   auto frameOf = [&](const Eigen::Vector3d& x) { return transform.ToFrame(transform.PreApply(x)); };
+  // Half-face: right-half nodes are moved along (passive), not attracted.
+  const bool halfFace = options.symmetric && options.halfFace;
+  auto attracted = [&](std::int32_t id, int map) {
+    return halfFace && atlasPlane.SignedDistance(atlas.nodes[static_cast<std::size_t>(id)]) < -kPlaneTolerance ? -1 : map;
+  };
   for (auto id : skinIds)
   {
     problem.points.push_back(frameOf(atlas.nodes[static_cast<std::size_t>(id)]));
-    problem.pointMap.push_back(0);
+    problem.pointMap.push_back(attracted(id, 0));
   }
   for (auto id : skullIds)
   {
     problem.points.push_back(frameOf(atlas.nodes[static_cast<std::size_t>(id)]));
-    problem.pointMap.push_back(1);
+    problem.pointMap.push_back(attracted(id, 1));
   }
   if (options.elementQualityFloor >= 0)
   {
     std::vector<std::int32_t> tracked(skinIds.begin(), skinIds.end());
     tracked.insert(tracked.end(), skullIds.begin(), skullIds.end());
-    AddMeshGuard(atlas, tracked, frameOf, problem);
+    AddMeshGuard(atlas, tracked, frameOf, problem, [&](std::size_t v) {
+      return options.holdingWeight > 0 && attracted(static_cast<std::int32_t>(v), 0) == 0 ? -2 : -1;
+    });
   }
   for (std::size_t i = 0; i < sourceCP.size(); ++i)
   {
@@ -504,7 +534,8 @@ AtlasRegistrationResult RegisterAtlas(const FEMesh& atlas, const Plane& atlasPla
   ElasticOptimizerOptions opt;
   opt.firstLevel = 1;
   opt.finestLevel = options.finestLevel > 0 ? options.finestLevel
-                                            : AutomaticLevel((problem.boxMax - problem.boxMin).minCoeff(), options.mapSpacing);
+                                            : AutomaticLevel((problem.boxMax - problem.boxMin).minCoeff(), options.mapSpacing,
+                                                             options.minimumCellVoxels);
   opt.stepSafety = options.stepSafety;
   opt.maximumSweeps = options.maximumSweeps;
   opt.tolerance = options.tolerance;
@@ -513,6 +544,9 @@ AtlasRegistrationResult RegisterAtlas(const FEMesh& atlas, const Plane& atlasPla
   opt.controlPointWeightCap = options.controlPointWeightCap;
   opt.elementQualityFloor = options.elementQualityFloor;
   opt.tieWeight = options.tieWeight;
+  opt.slidingWeight = options.slidingWeight;
+  opt.holdingWeight = options.holdingWeight;
+  opt.regularizationFirstLevel = options.regularizationFirstLevel;
   opt.progress = [&](double f) { progress(0.22 + 0.73 * f); };
   RegistrationStage elastic;
   elastic.name = "elastic";
@@ -605,12 +639,17 @@ LocalRefinementResult RefineLocally(const FEMesh& registered, vtkPolyData* skin,
     if ((f.array() > result.boxMin.array()).all() && (f.array() < result.boxMax.array()).all())
     {
       problem.points.push_back(f);
-      problem.pointMap.push_back(0);
+      problem.pointMap.push_back(options.symmetric && options.halfFace && f.x() < -kPlaneTolerance ? -1 : 0);
       tracked.push_back(id);
     }
   }
   if (options.elementQualityFloor >= 0)
-    AddMeshGuard(registered, tracked, [&](const Eigen::Vector3d& x) { return transform.ToFrame(x); }, problem);
+    AddMeshGuard(registered, tracked, [&](const Eigen::Vector3d& x) { return transform.ToFrame(x); }, problem,
+                 [&](std::size_t v) {
+                   const bool fitted = !(options.symmetric && options.halfFace) ||
+                                       transform.ToFrame(registered.nodes[v]).x() >= -kPlaneTolerance;
+                   return options.holdingWeight > 0 && fitted ? -2 : -1;
+                 });
   auto inBox = [&](const Eigen::Vector3d& f) {
     return (f.array() > result.boxMin.array()).all() && (f.array() < result.boxMax.array()).all();
   };
@@ -642,13 +681,17 @@ LocalRefinementResult RefineLocally(const FEMesh& registered, vtkPolyData* skin,
   ElasticOptimizerOptions opt;
   opt.firstLevel = 1;
   opt.finestLevel = options.finestLevel > 0 ? options.finestLevel
-                                            : AutomaticLevel((problem.boxMax - problem.boxMin).minCoeff(), options.spacing);
+                                            : AutomaticLevel((problem.boxMax - problem.boxMin).minCoeff(), options.spacing,
+                                                             options.minimumCellVoxels);
   opt.stepSafety = options.stepSafety;
   opt.maximumSweeps = options.maximumSweeps;
   opt.tolerance = options.tolerance;
   opt.symmetric = options.symmetric;
   opt.fixBoundary = true;
   opt.elementQualityFloor = options.elementQualityFloor;
+  opt.slidingWeight = options.slidingWeight;
+  opt.holdingWeight = options.holdingWeight;
+  opt.regularizationFirstLevel = options.regularizationFirstLevel;
   opt.progress = [&](double f) { progress(0.3 + 0.65 * f); };
   result.after.energyBefore = ElasticEnergy(transform, problem);
   const auto stats = OptimizeElastic(transform, problem, opt);

@@ -26,8 +26,10 @@ namespace mmrep
 struct AtlasRegistrationOptions
 {
   // Finest grid level (2^level cells per axis); 0: automatic, the finest level whose smallest
-  // cell is at least twice the distance-map spacing (finer cells cannot see more of the map).
+  // cell is at least `minimumCellVoxels` distance-map voxels (finer cells cannot see more of the
+  // map; level 5 on the bundled CTs).
   int finestLevel = 0;
+  double minimumCellVoxels = 2.0;
   double mapSpacing = 1.5;    // mm, distance maps of the subject skin and skull
   // Signed maps (negative inside) when a surface is closed: the energy uses |d| either way, but
   // trilinear interpolation of a signed map crosses zero at the surface, while that of |d| rounds
@@ -42,12 +44,24 @@ struct AtlasRegistrationOptions
   double controlPointTolerance = 0.5;  // mm: W_i doubles while the control point is farther
   double controlPointWeightCap = 1000; // upper bound of W_i
   bool symmetric = true;      // mirrored steps about the subject plane (needs a symmetric atlas)
+  // With `symmetric`: the paper's half-face registration (§3.2). Only the atlas's left half (patient
+  // left, the +x side of the atlas plane) and its plane nodes are attracted to the subject; the
+  // right half follows through the mirrored steps, so the model is the fitted left half and its
+  // mirror image. Off: the averaged symmetric fit, both halves attracted (the subject's asymmetry
+  // is split between them). Without `symmetric` (the full fit) this has no effect.
+  bool halfFace = true;
+  // Regularisation from level `regularizationFirstLevel` on (mmrepElasticOptimizer.h), so that the
+  // fine levels fit the surfaces without shifting the tissue behind them: the holding term μ_h (per
+  // mm²) on the inner nodes (on by default, chosen with CorrespondenceBenchmark), the sliding term
+  // μ_s on the surface nodes (off: it also resists the sliding a real speaker's shape needs).
+  double slidingWeight = 0.0;
+  double holdingWeight = 0.5;
+  int regularizationFirstLevel = 2;
   // Mesh guard (mmrepElasticOptimizer.h): every atlas node is moved along and no step may bring a
   // hexahedron below this scaled Jacobian (or lower one already below). Negative: no guard.
   double elementQualityFloor = 0.3;
-  // Tie μ (per mm², mmrepElasticOptimizer.h): trades surface fit for correspondence. Measured on
-  // the synthetic subject: μ = 0.02 → node error vs truth 2.81 → 2.12 mm, skin 0.43 → 0.51 mm;
-  // μ = 0.1 → 1.63 mm, skin 0.69 mm. Off by default (the paper's energy).
+  // Tie μ (per mm², mmrepElasticOptimizer.h): every attracted node tied to its start, trading
+  // surface fit for correspondence; superseded by the holding term, off by default.
   double tieWeight = 0.0;
   // Node sets of the atlas: attracted to the subject skin / skull; `lips` is only reported.
   std::string skinSet = "skin", skullSet = "skull", lipsSet = "lips";
@@ -103,6 +117,11 @@ struct AtlasRegistrationResult
   RegistrationReport report;
 };
 
+// The three symmetry modes by name: "half-face" (symmetric, half-face), "averaged" (symmetric, both
+// halves attracted), "full" (no symmetry). Throws std::invalid_argument for another name.
+void SetSymmetryMode(AtlasRegistrationOptions& options, const std::string& mode);
+std::string SymmetryModeName(const AtlasRegistrationOptions& options);
+
 // Throws std::invalid_argument (bad sets, control point names, planes) or std::runtime_error
 // (empty surfaces, atlas and subject not overlapping after the alignment), one line each.
 AtlasRegistrationResult RegisterAtlas(const FEMesh& atlas, const Plane& atlasPlane, const SubjectData& subject,
@@ -112,8 +131,9 @@ struct LocalRefinementOptions
 {
   double spacing = 0.5;  // mm, fine skin distance map over the refinement box
   bool signedMap = true; // signed when the skin is closed (see AtlasRegistrationOptions::signedMaps)
-  // Finest level of Q's grid; 0: automatic (smallest cell ≥ 2 × spacing).
+  // Finest level of Q's grid; 0: automatic (smallest cell ≥ minimumCellVoxels × spacing).
   int finestLevel = 0;
+  double minimumCellVoxels = 2.0;
   double boxMargin = 0.25;   // the region set's bounding box grown by this fraction per side…
   double minimumMargin = 4;  // …and by at least this many mm
   double stepSafety = 0.4;
@@ -129,7 +149,11 @@ struct LocalRefinementOptions
   std::string skullSet = "skull";
   double pinWeight = 1.0;
   bool symmetric = false; // mirrored steps about `plane` (keeps a symmetric mesh symmetric)
+  bool halfFace = false;  // with `symmetric`: only skin nodes on the left of `plane` (and on it) are attracted
   Plane plane;
+  double slidingWeight = 0.0; // sliding and holding terms, as AtlasRegistrationOptions
+  double holdingWeight = 0.25;
+  int regularizationFirstLevel = 1;
   double elementQualityFloor = 0.3; // mesh guard, as AtlasRegistrationOptions; negative: none
   std::function<void(double)> progress;
 };

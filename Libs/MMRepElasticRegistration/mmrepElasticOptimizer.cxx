@@ -14,6 +14,7 @@ namespace mmrep
 namespace
 {
 constexpr int kPad = 2; // padded cells beyond the box (boundary supports reach one cell out)
+constexpr int kHeld = -2; // pointMap of a held point
 
 class Engine
 {
@@ -107,6 +108,13 @@ public:
     {
       if (problem_.pointMap[k] < 0)
       {
+        if (problem_.pointMap[k] == kHeld && holdingWeight_ > 0)
+        {
+          const Eigen::Vector3d w = p - levelStart_[k];
+          if (g)
+            *g = 2.0 * holdingWeight_ * w;
+          return holdingWeight_ * w.squaredNorm();
+        }
         if (g)
           g->setZero();
         return 0.0;
@@ -118,9 +126,19 @@ public:
       // trilinear interpolation crosses zero at the surface instead of rounding off the V of |d|.
       const double sign = v < 0 ? -1.0 : 1.0;
       const Eigen::Vector3d u = p - start_[k];
+      double e = sign * v + options_.tieWeight * u.squaredNorm();
       if (g)
         *g = sign * (transform_.frameRotation * gw) + 2.0 * options_.tieWeight * u;
-      return sign * v + options_.tieWeight * u.squaredNorm();
+      if (slidingWeight_ > 0)
+      {
+        const Eigen::Vector3d& n = levelNormal_[k];
+        const Eigen::Vector3d w = p - levelStart_[k];
+        const Eigen::Vector3d t = w - n.dot(w) * n;
+        e += slidingWeight_ * t.squaredNorm();
+        if (g)
+          *g += 2.0 * slidingWeight_ * t;
+      }
+      return e;
     }
     const std::size_t i = k - problem_.points.size();
     const Eigen::Vector3d d = p - problem_.controlTargets[i];
@@ -357,7 +375,33 @@ public:
     return false;
   }
 
-  bool IsPassive(std::size_t k) const { return k < problem_.points.size() && problem_.pointMap[k] < 0; }
+  // Reference positions and unit surface normals (frame coordinates) of the attracted points at
+  // the start of level l, for the sliding term.
+  void StartSliding(int l)
+  {
+    slidingWeight_ = l >= options_.regularizationFirstLevel ? options_.slidingWeight : 0.0;
+    holdingWeight_ = l >= options_.regularizationFirstLevel ? options_.holdingWeight : 0.0;
+    if (!(slidingWeight_ > 0) && !(holdingWeight_ > 0))
+      return;
+    levelStart_ = problem_.points;
+    levelNormal_.assign(problem_.points.size(), Eigen::Vector3d::Zero());
+    for (std::size_t k = 0; k < problem_.points.size(); ++k)
+    {
+      if (problem_.pointMap[k] < 0)
+        continue;
+      Eigen::Vector3d gw;
+      problem_.maps[static_cast<std::size_t>(problem_.pointMap[k])].Value(transform_.ToWorld(problem_.points[k]), &gw);
+      const Eigen::Vector3d g = transform_.frameRotation * gw;
+      // Where the map has no clear direction (far outside, flat), no direction is preferred: the
+      // whole displacement counts as sliding.
+      levelNormal_[k] = g.norm() > 0.5 ? Eigen::Vector3d(g.normalized()) : Eigen::Vector3d::Zero();
+    }
+  }
+
+  bool IsPassive(std::size_t k) const
+  {
+    return k < problem_.points.size() && problem_.pointMap[k] < 0 && !(problem_.pointMap[k] == kHeld && holdingWeight_ > 0);
+  }
 
   // movedA_ holds the active points' trial positions; append the passive points' (same step) and
   // list every moved point in allIds_, same order.
@@ -395,6 +439,7 @@ public:
       level_ = &transform_.levels.back();
       dim_ = level_->cells + 2 * kPad;
       const double maxStep = options_.stepSafety / MaximumBumpGradient(level_->h);
+      StartSliding(l);
       Bucket();
       int sweeps = 0;
       double energy = TotalEnergy();
@@ -441,6 +486,8 @@ private:
   unsigned stamp_ = 0;
   std::vector<int> trialSlot_;
   std::vector<Eigen::Vector3d> start_; // points at the start (the tie's reference)
+  double slidingWeight_ = 0, holdingWeight_ = 0; // μ_s and μ_h of the current level
+  std::vector<Eigen::Vector3d> levelStart_, levelNormal_; // sliding term's reference and normals
   std::vector<std::pair<std::size_t, double>> touched_;
   std::vector<Eigen::Vector3d> movedA_, movedB_;
 };
@@ -452,7 +499,7 @@ ElasticOptimizerStats OptimizeElastic(ElasticTransform& transform, ElasticProble
   if (problem.pointMap.size() != problem.points.size())
     throw std::invalid_argument("elastic registration: one map index per point is required");
   for (int m : problem.pointMap)
-    if (m >= 0 && static_cast<std::size_t>(m) >= problem.maps.size())
+    if (m < kHeld || (m >= 0 && static_cast<std::size_t>(m) >= problem.maps.size()))
       throw std::invalid_argument("elastic registration: a point refers to a missing distance map");
   for (const auto& h : problem.hexahedra)
     for (int v : h)

@@ -50,14 +50,29 @@ struct ElasticOptimizerOptions
   // Tie: μ |p − p₀|² per attracted point (p₀ = its start): the distance terms do not see sliding
   // along a surface, so without it the greedy steps drift tissue tangentially. 0 = off.
   double tieWeight = 0.0;
+  // Sliding: μ_s |P(p − p_ℓ)|² per attracted point, P the projection on the tangent plane of its
+  // surface at p_ℓ, its position when level ℓ starts (normal = the map gradient there). Surface
+  // distances do not see a node moving along its surface, so without this term the fine levels
+  // slide tissue tangentially wherever that lowers another node's distance; with it a level may
+  // move nodes along their normals freely, and along the surface only as far as the smooth coarse
+  // levels already did. Applied from level `regularizationFirstLevel` on (coarse levels carry the global
+  // shape). 0 = off.
+  double slidingWeight = 0.0;
+  // Holding: μ_h |p − p_ℓ|² per held point (pointMap −2: the atlas's inner nodes, attached to no
+  // surface). A grid node deep in the tissue moves them freely while the few surface points at the
+  // edge of its support barely move; that step lowers the energy, so without this term the fine
+  // levels shift the inside of the face (muscles) while the surfaces stay put. The cost is
+  // quadratic in the step and the surfaces' gain linear, so steps that the surfaces need still pass.
+  double holdingWeight = 0.0;
+  int regularizationFirstLevel = 1; // first level of the sliding and holding terms
   std::function<void(double)> progress;
 };
 
 struct ElasticProblem
 {
   std::vector<DistanceMapSampler> maps;
-  // Tracked points in frame coordinates, each attracted by maps[pointMap[k]]; pointMap[k] < 0: a
-  // passive point (no energy), moved along for the mesh guard.
+  // Tracked points in frame coordinates, each attracted by maps[pointMap[k]]; pointMap[k] = −1: a
+  // passive point (no energy), moved along for the mesh guard; −2: a held point (holdingWeight).
   std::vector<Eigen::Vector3d> points;
   std::vector<int> pointMap;
   // Mesh guard: hexahedra over `points` (8 indices, VTK order); empty = no guard.

@@ -1,5 +1,6 @@
 #include "mmrepFaceModelPipeline.h"
 
+#include "mmrepCanonicalVoxelOrder.h"
 #include "mmrepHeadSegmentation.h"
 #include "mmrepSurfaceExtraction.h"
 #include "mmrepSymmetryPlane.h"
@@ -9,7 +10,6 @@
 #include <vtkPoints.h>
 #include <vtkBox.h>
 #include <vtkExtractPolyDataGeometry.h>
-#include <vtkQuadricClustering.h>
 
 #include <algorithm>
 #include <chrono>
@@ -85,19 +85,27 @@ std::vector<Point3> MatchControlPoints(const CTImage* ct, const std::vector<Land
   return targets;
 }
 
+// `fittedHalf[i]`: node i of the atlas lies on the fitted (left) half or on the plane.
 ModelAccuracy Measure(const std::string& state, const FEMesh& mesh, vtkPolyData* skin, vtkPolyData* skull,
                       const std::vector<std::string>& names, const std::vector<Point3>& targets,
-                      const AtlasRegistrationOptions& sets)
+                      const AtlasRegistrationOptions& sets, const std::vector<char>& fittedHalf)
 {
   ModelAccuracy a;
   a.state = state;
-  auto set = [&](const std::string& name) {
-    const auto it = mesh.nodeSets.find(name);
-    return it == mesh.nodeSets.end() ? std::vector<std::int32_t>{} : it->second;
+  auto set = [&](const std::string& name, bool half) {
+    std::vector<std::int32_t> ids;
+    if (const auto it = mesh.nodeSets.find(name); it != mesh.nodeSets.end())
+      for (auto id : it->second)
+        if (!half || fittedHalf[static_cast<std::size_t>(id)])
+          ids.push_back(id);
+    return ids;
   };
-  a.skin = MeasureSurfaceError(mesh.nodes, set(sets.skinSet), skin);
-  a.skull = MeasureSurfaceError(mesh.nodes, set(sets.skullSet), skull);
-  a.lips = MeasureSurfaceError(mesh.nodes, set(sets.lipsSet), skin);
+  a.skin = MeasureSurfaceError(mesh.nodes, set(sets.skinSet, false), skin);
+  a.skull = MeasureSurfaceError(mesh.nodes, set(sets.skullSet, false), skull);
+  a.lips = MeasureSurfaceError(mesh.nodes, set(sets.lipsSet, false), skin);
+  a.skinHalf = MeasureSurfaceError(mesh.nodes, set(sets.skinSet, true), skin);
+  a.skullHalf = MeasureSurfaceError(mesh.nodes, set(sets.skullSet, true), skull);
+  a.lipsHalf = MeasureSurfaceError(mesh.nodes, set(sets.lipsSet, true), skin);
   for (std::size_t i = 0; i < names.size(); ++i)
   {
     double e = std::numeric_limits<double>::quiet_NaN();
@@ -107,28 +115,6 @@ ModelAccuracy Measure(const std::string& state, const FEMesh& mesh, vtkPolyData*
     a.controlErrors.push_back(e);
   }
   return a;
-}
-
-// A coarse copy of the skin for the symmetry plane: vertex clustering on a regular grid
-// (deterministic, linear time).
-vtkSmartPointer<vtkPolyData> CoarseSkin(vtkPolyData* skin, std::size_t triangles)
-{
-  if (triangles == 0 || static_cast<std::size_t>(skin->GetNumberOfPolys()) <= triangles)
-    return skin;
-  double b[6];
-  skin->GetBounds(b);
-  // Clustering leaves about 2 triangles per occupied bin on a closed surface; the head's surface
-  // occupies roughly the bins of its bounding box's faces.
-  const double area = 2 * ((b[1] - b[0]) * (b[3] - b[2]) + (b[1] - b[0]) * (b[5] - b[4]) + (b[3] - b[2]) * (b[5] - b[4]));
-  const double bin = std::sqrt(2.0 * area / static_cast<double>(triangles));
-  vtkNew<vtkQuadricClustering> cluster;
-  cluster->SetInputData(skin);
-  cluster->SetNumberOfDivisions(std::max(8, static_cast<int>(std::ceil((b[1] - b[0]) / bin))),
-                                std::max(8, static_cast<int>(std::ceil((b[3] - b[2]) / bin))),
-                                std::max(8, static_cast<int>(std::ceil((b[5] - b[4]) / bin))));
-  cluster->Update();
-  vtkSmartPointer<vtkPolyData> out = cluster->GetOutput();
-  return out;
 }
 
 // The part of a surface within `margin` mm of the mesh's bounding box: every node's closest
@@ -155,6 +141,52 @@ vtkSmartPointer<vtkPolyData> CropAround(vtkPolyData* surface, const FEMesh& mesh
 }
 
 } // namespace
+
+SubjectSurfaceSet ExtractSubjectSurfaces(const CTImage* ct, const FaceModelOptions& options,
+                                         const std::function<void(double)>& progress)
+{
+  auto report = [&](double f) {
+    if (progress)
+      progress(f);
+  };
+  // One voxel order for every file of the same physical CT: the surfaces, and all that follows,
+  // are then the same bytes.
+  const auto canonical = CanonicalVoxelOrder(ct);
+  ct = canonical.GetPointer();
+  SubjectSurfaceSet s;
+  s.thresholds = ChooseThresholds(ct, options.thresholdMode, options.skinThreshold, options.boneThreshold);
+  HeadSegmentationOptions seg;
+  seg.skinThreshold = s.thresholds.skin;
+  seg.boneThreshold = s.thresholds.bone;
+  seg.openingRadius = options.openingRadius;
+  const auto head = SegmentHead(ct, seg, [&](double f) { report(0.6 * f); });
+  if (options.closeSlits > 0)
+  {
+    const double axialSpacing = ct->GetSpacing()[AxialAxis(ct)];
+    CloseAxialSlits(head.skin.GetPointer(), std::max(1, static_cast<int>(options.closeSlits / axialSpacing + 1e-9)));
+  }
+  SurfaceExtractionOptions surf;
+  surf.largestPieceOnly = false; // single-component masks (see SkinSkullSurfaces)
+  s.skin = ExtractSurface(MaskedIntensities(ct, head.skin, s.thresholds.skin), s.thresholds.skin, surf);
+  report(0.8);
+  s.skull = ExtractSurface(MaskedIntensities(ct, head.bone, s.thresholds.bone), s.thresholds.bone, surf);
+  report(1.0);
+  return s;
+}
+
+SymmetryPlaneResult EstimateSubjectPlane(vtkPolyData* skin, const FaceModelOptions& options)
+{
+  return EstimateSymmetryPlane(skin, options.plane);
+}
+
+LocalRefinementOptions RefinementOptionsFor(const FaceModelOptions& options, const Plane& plane)
+{
+  auto q = options.refinement;
+  q.symmetric = options.registration.symmetric;
+  q.halfFace = options.registration.symmetric && options.registration.halfFace;
+  q.plane = plane;
+  return q;
+}
 
 FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& controlPoints, const FEMesh& atlas,
                                const FaceModelOptions& options)
@@ -189,27 +221,15 @@ FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& c
 
   // 1. Surfaces.
   auto t = Clock::now();
-  result.thresholds = ChooseThresholds(ct, options.thresholdMode, options.skinThreshold, options.boneThreshold);
-  HeadSegmentationOptions seg;
-  seg.skinThreshold = result.thresholds.skin;
-  seg.boneThreshold = result.thresholds.bone;
-  seg.openingRadius = options.openingRadius;
-  const auto head = SegmentHead(ct, seg, [&](double f) { report("surfaces", 0.6 * f); });
-  if (options.closeSlits > 0)
-  {
-    const double axialSpacing = ct->GetSpacing()[AxialAxis(ct)];
-    CloseAxialSlits(head.skin.GetPointer(), std::max(1, static_cast<int>(options.closeSlits / axialSpacing + 1e-9)));
-  }
-  SurfaceExtractionOptions surf;
-  surf.largestPieceOnly = false; // single-component masks (see SkinSkullSurfaces)
-  result.skin = ExtractSurface(MaskedIntensities(ct, head.skin, result.thresholds.skin), result.thresholds.skin, surf);
-  report("surfaces", 0.8);
-  result.skull = ExtractSurface(MaskedIntensities(ct, head.bone, result.thresholds.bone), result.thresholds.bone, surf);
+  auto surfaces = ExtractSubjectSurfaces(ct, options, [&](double f) { report("surfaces", f); });
+  result.thresholds = surfaces.thresholds;
+  result.skin = surfaces.skin;
+  result.skull = surfaces.skull;
   finish("surfaces", t);
 
   // 2. Symmetry plane.
   t = Clock::now();
-  const auto plane = EstimateSymmetryPlane(CoarseSkin(result.skin, options.planeTriangles));
+  const auto plane = EstimateSubjectPlane(result.skin, options);
   result.plane = plane.plane;
   result.planeResidual = plane.rmsResidual;
   finish("symmetry plane", t);
@@ -224,12 +244,19 @@ FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& c
     subject.controlPoints.push_back({result.controlNames[i], result.controlTargets[i]});
   auto registrationOptions = options.registration;
   registrationOptions.progress = [&](double f) { report("registration", f); };
-  auto r = RegisterAtlas(atlas, FitPlaneToNodeSet(atlas, "midsagittal"), subject, registrationOptions);
+  const Plane atlasPlane = FitPlaneToNodeSet(atlas, "midsagittal");
+  std::vector<char> fittedHalf(atlas.nodes.size());
+  for (std::size_t i = 0; i < atlas.nodes.size(); ++i)
+    fittedHalf[i] = atlasPlane.SignedDistance(atlas.nodes[i]) >= -1e-3;
+  result.fitted = !options.registration.symmetric ? "whole face (asymmetric fit)"
+                  : options.registration.halfFace ? "left half (half-face: the right half is its mirror image)"
+                                                  : "both halves, averaged (symmetric fit)";
+  auto r = RegisterAtlas(atlas, atlasPlane, subject, registrationOptions);
   result.registration = std::move(r.transform);
   result.registrationReport = std::move(r.report);
   result.registered = r.mesh;
   result.accuracy.push_back(Measure("R", r.mesh, result.skin, result.skull, result.controlNames,
-                                    result.controlTargets, options.registration));
+                                    result.controlTargets, options.registration, fittedHalf));
   finish("registration", t);
 
   // 4. Lips refinement Q.
@@ -237,9 +264,7 @@ FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& c
   FEMesh refined;
   if (options.refine)
   {
-    auto refineOptions = options.refinement;
-    refineOptions.symmetric = options.registration.symmetric;
-    refineOptions.plane = result.plane;
+    auto refineOptions = RefinementOptionsFor(options, result.plane);
     refineOptions.progress = [&](double f) { report("refinement", f); };
     auto q = RefineLocally(r.mesh, result.skin, refineOptions);
     result.refinement = std::move(q.transform);
@@ -249,7 +274,7 @@ FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& c
     refined = std::move(r.mesh);
   result.refined = refined;
   result.accuracy.push_back(Measure("Q∘R", refined, result.skin, result.skull, result.controlNames,
-                                    result.controlTargets, options.registration));
+                                    result.controlTargets, options.registration, fittedHalf));
   finish("refinement", t);
 
   // 5. Repair (inner nodes first, surface nodes slide on the subject's surfaces, symmetry kept).
@@ -275,7 +300,7 @@ FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& c
   t = Clock::now();
   result.muscles = InferMuscles(atlas, [&](const Point3& x) { return result.AtlasToSubject(x); }, result.model);
   result.accuracy.push_back(Measure("repaired", result.model, result.skin, result.skull, result.controlNames,
-                                    result.controlTargets, options.registration));
+                                    result.controlTargets, options.registration, fittedHalf));
   finish("muscles", t);
   result.totalSeconds = Since(t0);
   return result;

@@ -32,9 +32,7 @@ struct FaceModelOptions
   // Axial slits of the skin mask up to this height (mm) are closed (CloseAxialSlits): the lips
   // meet at rest, as in the atlas, instead of the skin diving into the lip slit. 0: keep them.
   double closeSlits = 4.0;
-  // Symmetry plane: estimated on the skin decimated to about this many triangles (the plane is a
-  // global property; ICP on the full surface costs 10× more for the same plane within 0.1°).
-  std::size_t planeTriangles = 40000;
+  SymmetryPlaneOptions plane;            // mid-sagittal plane of the skin
   AtlasRegistrationOptions registration; // R (progress is set by the pipeline)
   bool refine = true;                    // Q over the lips
   LocalRefinementOptions refinement;     // Q (plane, symmetry and progress set by the pipeline)
@@ -54,7 +52,8 @@ struct StageTime
 struct ModelAccuracy
 {
   std::string state; // "R", "Q∘R", "repaired"
-  SurfaceErrorStatistics skin, skull, lips;
+  SurfaceErrorStatistics skin, skull, lips;             // whole model
+  SurfaceErrorStatistics skinHalf, skullHalf, lipsHalf; // the fitted (left) half and the plane
   std::vector<double> controlErrors; // per control point, order of FaceModelResult::controlNames
 };
 
@@ -74,12 +73,29 @@ struct FaceModelResult
   std::vector<std::string> controlNames;          // atlas landmark names = subject control points
   std::vector<Point3> controlTargets;             // the subject's control points, same order
   std::vector<ModelAccuracy> accuracy;            // after R, after Q∘R, after repair
+  // Which part of the atlas was fitted to the speaker: "left half" (half-face: the right half is its
+  // mirror image), "both halves, averaged" or "whole face (asymmetric)".
+  std::string fitted;
   std::vector<StageTime> times;
   double totalSeconds = 0;
 
   // Q∘R(x), atlas -> subject.
   Point3 AtlasToSubject(const Point3& x) const { return refinement.Apply(registration.Apply(x)); }
 };
+
+// Stages 1 and 2 of BuildFaceModel, for callers that register several times onto one subject (the
+// benchmarks): the skin and skull surfaces as the pipeline extracts them, and the symmetry plane
+// estimated on the decimated skin.
+struct SubjectSurfaceSet
+{
+  vtkSmartPointer<vtkPolyData> skin, skull;
+  CTThresholds thresholds;
+};
+SubjectSurfaceSet ExtractSubjectSurfaces(const CTImage* ct, const FaceModelOptions& options,
+                                         const std::function<void(double)>& progress = {});
+SymmetryPlaneResult EstimateSubjectPlane(vtkPolyData* skin, const FaceModelOptions& options);
+// Q's options as the pipeline sets them after R onto a subject with this plane.
+LocalRefinementOptions RefinementOptionsFor(const FaceModelOptions& options, const Plane& plane);
 
 // Throws std::invalid_argument for inputs that cannot work (control points missing, unnamed or
 // outside the CT volume, an atlas without the sets or landmarks), std::runtime_error when a stage

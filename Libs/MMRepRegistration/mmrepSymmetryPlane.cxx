@@ -1,36 +1,34 @@
 // Mid-sagittal plane by mirror-and-register (Chang & Park 2008), see mmrepSymmetryPlane.h.
 //
-// The mirrored samples M(p) are rigidly registered onto the surface by trimmed ICP (closest points
-// on the triangles, the worst pairs dropped so that asymmetric parts and the flat caps where the CT
-// cuts the neck do not pull). A head tilted by θ needs a correction of 2θ after mirroring by the
-// axis-aligned initial plane, so a coarse point-to-point ICP (rigid Umeyama updates: robust far
-// from the solution) starts from a small grid of rotations about the AP and SI axes and keeps the
-// start with the lowest trimmed residual. The refinement minimises point-to-plane distances
-// (linearised, Chen & Medioni 1992): point-to-point ICP slides only slowly along a smooth head
-// (hundreds of iterations for 0.1°), point-to-plane converges in a few.
+// The mirrored samples M(p) are rigidly registered onto the surface by minimising the squared
+// signed distances d(T(M p))² read from the surface's distance map, with the worst pairs dropped
+// at each iteration (asymmetric parts and the flat caps where the CT cuts the neck must not pull).
+// Gauss-Newton on the rigid parameters about the samples' centroid: the map's gradient is the
+// surface normal, so each iteration is a point-to-plane step (Chen & Medioni 1992) without any
+// closest-point search. A head tilted by θ needs a correction of 2θ after mirroring by the
+// axis-aligned initial plane, so the registration starts from a small grid of rotations about the
+// AP and SI axes (on a quarter of the samples) and keeps the start with the lowest trimmed residual.
 #include "mmrepSymmetryPlane.h"
 
-#include "mmrepPointTriangleDistance.h"
+#include "mmrepDistanceMapSampler.h"
 #include "mmrepSimilarityTransform.h"
+#include "mmrepSurfaceDistanceMap.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
-#include <vtkCellArray.h>
 #include <vtkGenericCell.h>
-#include <vtkIdList.h>
 #include <vtkNew.h>
-#include <vtkPoints.h>
 #include <vtkStaticCellLocator.h>
 #include <vtkTriangleFilter.h>
 
 #include <algorithm>
-#include <array>
-#include <limits>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace mmrep
@@ -39,135 +37,104 @@ namespace
 {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr int kExactIterations = 10; // after the map's: it starts within a fraction of a voxel
 
-// Rigid transform with its linear part as a rotation about `centre`.
-SimilarityTransform RotationAbout(const Eigen::Vector3d& centre, const Eigen::Matrix3d& r)
+// One vertex per occupied cell of a regular grid over the bounding box, the one nearest the cell's
+// centre (ties: lexicographic coordinates), cells in index order: the same samples whatever the
+// vertex order. The cell size gives about `target` occupied cells on a closed head-like surface.
+std::vector<Eigen::Vector3d> GridSamples(vtkPolyData* skin, std::size_t target)
 {
-  SimilarityTransform t;
-  t.rotation = r;
-  t.translation = centre - r * centre;
-  return t;
+  double b[6];
+  skin->GetBounds(b);
+  const double area = 2 * ((b[1] - b[0]) * (b[3] - b[2]) + (b[1] - b[0]) * (b[5] - b[4]) + (b[3] - b[2]) * (b[5] - b[4]));
+  const double cell = std::max(1e-6, std::sqrt(area / static_cast<double>(std::max<std::size_t>(target, 1))));
+  using Key = std::tuple<long, long, long>;
+  std::map<Key, std::pair<double, Eigen::Vector3d>> best; // key -> (distance² to the centre, vertex)
+  for (vtkIdType i = 0; i < skin->GetNumberOfPoints(); ++i)
+  {
+    double q[3];
+    skin->GetPoint(i, q);
+    const Eigen::Vector3d p(q[0], q[1], q[2]);
+    if (!p.allFinite())
+      throw std::runtime_error("symmetry plane: the skin surface has a non-finite point");
+    const Key key{static_cast<long>(std::floor((p.x() - b[0]) / cell)), static_cast<long>(std::floor((p.y() - b[2]) / cell)),
+                  static_cast<long>(std::floor((p.z() - b[4]) / cell))};
+    const Eigen::Vector3d centre(b[0] + (std::get<0>(key) + 0.5) * cell, b[2] + (std::get<1>(key) + 0.5) * cell,
+                                 b[4] + (std::get<2>(key) + 0.5) * cell);
+    const double d2 = (p - centre).squaredNorm();
+    const auto it = best.find(key);
+    auto lexLess = [](const Eigen::Vector3d& a, const Eigen::Vector3d& c) {
+      return std::tie(a.x(), a.y(), a.z()) < std::tie(c.x(), c.y(), c.z());
+    };
+    if (it == best.end())
+      best.emplace(key, std::make_pair(d2, p));
+    else if (d2 < it->second.first || (d2 == it->second.first && lexLess(p, it->second.second)))
+      it->second = {d2, p};
+  }
+  std::vector<Eigen::Vector3d> samples;
+  samples.reserve(best.size());
+  for (const auto& [key, entry] : best)
+    samples.push_back(entry.second);
+  return samples;
 }
 
-struct IcpState
+struct RegistrationState
 {
   SimilarityTransform transform;
   double rms = 0;
   int iterations = 0;
-  std::vector<std::size_t> kept; // indices into the sample list, kept at the last matching
+  std::vector<std::size_t> kept; // indices into the sample list, kept at the last evaluation
 };
 
-class TrimmedIcp
+// Rigid registration of the moving points onto the zero level of a distance (map or exact).
+template <class Distance>
+class MirrorRegistration
 {
 public:
-  TrimmedIcp(vtkPolyData* surface, std::vector<Eigen::Vector3d> moving, double trimFraction)
-    : moving_(std::move(moving)), trim_(trimFraction)
+  MirrorRegistration(const Distance& map, std::vector<Eigen::Vector3d> moving, double trim)
+    : map_(map), moving_(std::move(moving)), trim_(trim)
   {
-    locator_->SetDataSet(surface);
-    locator_->BuildLocator();
-    // Triangle corners and unit normals, indexed like the locator's cell ids.
-    vtkCellArray* polys = surface->GetPolys();
-    vtkIdType n = 0;
-    const vtkIdType* ids = nullptr;
-    for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-    {
-      std::array<Eigen::Vector3d, 3> t;
-      for (int k = 0; k < 3; ++k)
-        surface->GetPoint(ids[k], t[static_cast<std::size_t>(k)].data());
-      const Eigen::Vector3d normal = (t[1] - t[0]).cross(t[2] - t[0]);
-      const double len = normal.norm();
-      triangles_.push_back(t);
-      normals_.push_back(len > 0 ? Eigen::Vector3d(normal / len) : Eigen::Vector3d::Zero());
-    }
   }
 
-  // Closest point on the surface, deterministic: VTK's static locator is built in parallel, so
-  // among triangles at equal distance (a shared edge or vertex) the one it reports may change from
-  // run to run, and with it the normal. The candidates touching VTK's answer are re-evaluated
-  // here and ties go to the lowest triangle id.
-  double Closest(const Eigen::Vector3d& x, Eigen::Vector3d& closest, Eigen::Vector3d& normal)
-  {
-    double c[3], d2 = 0;
-    vtkIdType cellId = -1;
-    int subId = 0;
-    locator_->FindClosestPoint(x.data(), c, cell_, cellId, subId, d2);
-    const double eps = 1e-6 * (1.0 + std::sqrt(d2));
-    double bounds[6] = {c[0] - eps, c[0] + eps, c[1] - eps, c[1] + eps, c[2] - eps, c[2] + eps};
-    candidates_->Reset();
-    locator_->FindCellsWithinBounds(bounds, candidates_);
-    std::vector<vtkIdType> ids(candidates_->GetPointer(0), candidates_->GetPointer(0) + candidates_->GetNumberOfIds());
-    if (cellId >= 0)
-      ids.push_back(cellId);
-    std::sort(ids.begin(), ids.end());
-    double best = std::numeric_limits<double>::infinity();
-    for (vtkIdType id : ids)
-    {
-      const auto& t = triangles_[static_cast<std::size_t>(id)];
-      const Eigen::Vector3d y = ClosestPointOnTriangle(x, t[0], t[1], t[2]);
-      const double e2 = (y - x).squaredNorm();
-      if (e2 < best)
-      {
-        best = e2;
-        closest = y;
-        normal = normals_[static_cast<std::size_t>(id)];
-      }
-    }
-    return best;
-  }
-
-  // Matches T(moving[i]) for i in `subset` to the surface; keeps the best (1 - trim) fraction.
-  // Returns the RMS distance of the kept pairs; fills targets and kept.
-  double Match(const SimilarityTransform& t, const std::vector<std::size_t>& subset,
-               std::vector<Eigen::Vector3d>& targets, std::vector<Eigen::Vector3d>& normals,
-               std::vector<std::size_t>& kept)
+  // Signed distances of T(moving[k]) for k in subset, the kept (best 1 − trim) fraction (sorted
+  // subset positions) and their RMS.
+  double Evaluate(const SimilarityTransform& t, const std::vector<std::size_t>& subset, std::vector<double>& d,
+                  std::vector<Eigen::Vector3d>& normals, std::vector<std::size_t>& kept) const
   {
     const std::size_t n = subset.size();
-    targets.resize(n);
+    d.resize(n);
     normals.resize(n);
-    std::vector<double> d2(n);
     for (std::size_t k = 0; k < n; ++k)
-    {
-      d2[k] = Closest(t.Apply(moving_[subset[k]]), targets[k], normals[k]);
-    }
+      d[k] = map_.Value(t.Apply(moving_[subset[k]]), &normals[k]);
     std::vector<std::size_t> order(n);
     std::iota(order.begin(), order.end(), 0);
-    // Ties broken by index: the same input gives the same pairs.
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t a, std::size_t b) { return d2[a] < d2[b] || (d2[a] == d2[b] && a < b); });
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return std::abs(d[a]) < std::abs(d[b]) || (std::abs(d[a]) == std::abs(d[b]) && a < b);
+    });
     const std::size_t keep = std::max<std::size_t>(3, static_cast<std::size_t>(std::ceil((1.0 - trim_) * n)));
     order.resize(std::min(keep, n));
     std::sort(order.begin(), order.end());
     kept = order;
     double sum = 0;
     for (std::size_t k : kept)
-      sum += d2[k];
+      sum += d[k] * d[k];
     return std::sqrt(sum / static_cast<double>(kept.size()));
   }
 
-  // pointToPlane: linearised point-to-plane updates; otherwise rigid Umeyama (point-to-point).
-  IcpState Run(const SimilarityTransform& start, const std::vector<std::size_t>& subset, int maxIterations,
-               double tolerance, const Eigen::Vector3d& centre, bool pointToPlane)
+  RegistrationState Run(const SimilarityTransform& start, const std::vector<std::size_t>& subset, int maxIterations,
+                        double tolerance, const Eigen::Vector3d& centre) const
   {
-    IcpState s;
+    RegistrationState s;
     s.transform = start;
-    std::vector<Eigen::Vector3d> targets, normals;
+    std::vector<double> d;
+    std::vector<Eigen::Vector3d> normals;
     std::vector<std::size_t> kept;
     for (s.iterations = 1; s.iterations <= maxIterations; ++s.iterations)
     {
-      Match(s.transform, subset, targets, normals, kept);
+      Evaluate(s.transform, subset, d, normals, kept);
       SimilarityTransform next;
-      if (!(pointToPlane && PointToPlaneStep(s.transform, subset, targets, normals, kept, centre, next)))
-      {
-        std::vector<Eigen::Vector3d> src, dst;
-        src.reserve(kept.size());
-        dst.reserve(kept.size());
-        for (std::size_t k : kept)
-        {
-          src.push_back(moving_[subset[k]]);
-          dst.push_back(targets[k]);
-        }
-        next = EstimateRigid(src, dst);
-      }
+      if (!Step(s.transform, subset, d, normals, kept, centre, next))
+        break;
       const double turn = Eigen::AngleAxisd(next.rotation * s.transform.rotation.transpose()).angle();
       const double shift = (next.Apply(centre) - s.transform.Apply(centre)).norm();
       s.transform = next;
@@ -175,29 +142,29 @@ public:
         break;
     }
     s.iterations = std::min(s.iterations, maxIterations);
-    s.rms = Match(s.transform, subset, targets, normals, kept);
+    s.rms = Evaluate(s.transform, subset, d, normals, kept);
     s.kept.clear();
     for (std::size_t k : kept)
       s.kept.push_back(subset[k]);
     return s;
   }
 
-  // One Gauss-Newton step of Σ ((x_k + ω×(x_k - c) + v - y_k)·n_k)² over the kept pairs, about the
-  // centre c for conditioning. Returns false when the system is singular (e.g. a flat patch).
-  bool PointToPlaneStep(const SimilarityTransform& t, const std::vector<std::size_t>& subset,
-                        const std::vector<Eigen::Vector3d>& targets, const std::vector<Eigen::Vector3d>& normals,
-                        const std::vector<std::size_t>& kept, const Eigen::Vector3d& centre, SimilarityTransform& next)
+private:
+  // One Gauss-Newton step of Σ d(x_k + ω×(x_k − c) + v)² over the kept points, about the centre c
+  // for conditioning (∂d/∂ω = (x − c) × ∇d, ∂d/∂v = ∇d). False when the system is singular.
+  bool Step(const SimilarityTransform& t, const std::vector<std::size_t>& subset, const std::vector<double>& d,
+            const std::vector<Eigen::Vector3d>& normals, const std::vector<std::size_t>& kept,
+            const Eigen::Vector3d& centre, SimilarityTransform& next) const
   {
     Eigen::Matrix<double, 6, 6> a = Eigen::Matrix<double, 6, 6>::Zero();
     Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
     for (std::size_t k : kept)
     {
       const Eigen::Vector3d x = t.Apply(moving_[subset[k]]);
-      const Eigen::Vector3d& n = normals[k];
       Eigen::Matrix<double, 6, 1> row;
-      row << (x - centre).cross(n), n;
+      row << (x - centre).cross(normals[k]), normals[k];
       a += row * row.transpose();
-      b -= row * (x - targets[k]).dot(n);
+      b -= row * d[k];
     }
     Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(a);
     if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-12))
@@ -216,15 +183,65 @@ public:
     return true;
   }
 
-private:
+  const Distance& map_;
   std::vector<Eigen::Vector3d> moving_;
   double trim_;
+};
+
+// Exact distances for the last iterations: a map's trilinear interpolation rounds the surface (an
+// unsigned map, of an open surface, by up to a quarter voxel), the triangles do not. The residual
+// direction is the closest point's (x − y)/|x − y|, which does not depend on which of two triangles
+// sharing the closest edge the locator reports: the same for any triangle order.
+class ExactDistance
+{
+public:
+  explicit ExactDistance(vtkPolyData* surface)
+  {
+    locator_->SetDataSet(surface);
+    locator_->BuildLocator();
+  }
+  double Value(const Eigen::Vector3d& x, Eigen::Vector3d* gradient) const
+  {
+    double c[3], d2 = 0;
+    vtkIdType cellId = -1;
+    int subId = 0;
+    locator_->FindClosestPoint(const_cast<double*>(x.data()), c, cell_, cellId, subId, d2);
+    const Eigen::Vector3d y(c[0], c[1], c[2]);
+    const double d = std::sqrt(d2);
+    if (gradient)
+      *gradient = d > 1e-12 ? Eigen::Vector3d((x - y) / d) : Eigen::Vector3d::Zero();
+    return d;
+  }
+
+private:
   vtkNew<vtkStaticCellLocator> locator_;
   vtkNew<vtkGenericCell> cell_;
-  vtkNew<vtkIdList> candidates_;
-  std::vector<std::array<Eigen::Vector3d, 3>> triangles_;
-  std::vector<Eigen::Vector3d> normals_;
 };
+
+SimilarityTransform RotationAbout(const Eigen::Vector3d& centre, const Eigen::Matrix3d& r)
+{
+  SimilarityTransform t;
+  t.rotation = r;
+  t.translation = centre - r * centre;
+  return t;
+}
+
+FloatImage::Pointer SkinMap(vtkPolyData* skin, double spacing)
+{
+  SurfaceDistanceMapOptions o;
+  o.spacing = spacing;
+  o.margin = 10.0;
+  o.signedDistance = true; // zero at the surface; an open surface falls back to |d|
+  try
+  {
+    return ComputeSurfaceDistanceMap(skin, o);
+  }
+  catch (const std::runtime_error&)
+  {
+    o.signedDistance = false;
+    return ComputeSurfaceDistanceMap(skin, o);
+  }
+}
 
 } // namespace
 
@@ -233,9 +250,9 @@ SymmetryPlaneResult EstimateSymmetryPlane(vtkPolyData* skin, const SymmetryPlane
   if (skin == nullptr || skin->GetNumberOfPoints() == 0 || skin->GetNumberOfPolys() == 0)
     throw std::runtime_error("symmetry plane: the skin surface is empty (no points or no triangles)");
   if (options.maximumIterations < 1 || options.samplePoints < 3 || !(options.trimFraction >= 0) ||
-      !(options.trimFraction < 0.9) || !(options.tolerance > 0))
+      !(options.trimFraction < 0.9) || !(options.tolerance > 0) || !(options.mapSpacing > 0))
     throw std::invalid_argument("symmetry plane: invalid options (iterations >= 1, samples >= 3, "
-                                "trim fraction in [0, 0.9), tolerance > 0)");
+                                "trim fraction in [0, 0.9), tolerance > 0, map spacing > 0)");
 
   // Only the polygons take part (stray vertex or line cells are not skin), as triangles.
   vtkNew<vtkPolyData> polygons;
@@ -250,18 +267,7 @@ SymmetryPlaneResult EstimateSymmetryPlane(vtkPolyData* skin, const SymmetryPlane
   if (surface->GetNumberOfPolys() == 0)
     throw std::runtime_error("symmetry plane: the skin surface has no triangles");
 
-  // Deterministic subsample: every stride-th vertex.
-  const vtkIdType nPoints = skin->GetNumberOfPoints();
-  const vtkIdType stride = std::max<vtkIdType>(1, nPoints / static_cast<vtkIdType>(options.samplePoints));
-  std::vector<Eigen::Vector3d> samples;
-  for (vtkIdType i = 0; i < nPoints && samples.size() < options.samplePoints; i += stride)
-  {
-    double p[3];
-    skin->GetPoint(i, p);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-      throw std::runtime_error("symmetry plane: the skin surface has a non-finite point");
-    samples.emplace_back(p[0], p[1], p[2]);
-  }
+  const std::vector<Eigen::Vector3d> samples = GridSamples(surface, options.samplePoints);
   if (samples.size() < 3)
     throw std::runtime_error("symmetry plane: the skin surface has fewer than 3 points");
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
@@ -273,7 +279,7 @@ SymmetryPlaneResult EstimateSymmetryPlane(vtkPolyData* skin, const SymmetryPlane
   if (!options.hasInitialPlane)
   {
     double b[6];
-    skin->GetBounds(b);
+    surface->GetBounds(b);
     initial.point = Eigen::Vector3d(0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]));
     initial.normal = Eigen::Vector3d::UnitX();
   }
@@ -289,17 +295,19 @@ SymmetryPlaneResult EstimateSymmetryPlane(vtkPolyData* skin, const SymmetryPlane
   for (const auto& p : samples)
     mirrored.push_back(mLinear * p + mShift);
 
-  TrimmedIcp icp(surface, mirrored, options.trimFraction);
+  const auto map = SkinMap(surface, options.mapSpacing);
+  const DistanceMapSampler sampler(map);
+  const MirrorRegistration<DistanceMapSampler> registration(sampler, mirrored, options.trimFraction);
 
-  // Coarse search over starting rotations (about the AP and SI axes through the centroid) on a
-  // quarter of the samples; ±30° covers a head tilted by up to ±15° about either axis.
+  // Starting rotations about the AP and SI axes through the centroid, on a quarter of the samples;
+  // ±30° covers a head tilted by up to ±15° about either axis.
   std::vector<std::size_t> all(samples.size()), coarse;
   std::iota(all.begin(), all.end(), 0);
   for (std::size_t i = 0; i < all.size(); i += 4)
     coarse.push_back(i);
   if (coarse.size() < 3)
     coarse = all;
-  IcpState best;
+  RegistrationState best;
   bool haveBest = false;
   for (double roll : {0.0, -30.0, 30.0})
     for (double yaw : {0.0, -30.0, 30.0})
@@ -307,14 +315,19 @@ SymmetryPlaneResult EstimateSymmetryPlane(vtkPolyData* skin, const SymmetryPlane
       const Eigen::Matrix3d r = (Eigen::AngleAxisd(yaw * kPi / 180, Eigen::Vector3d::UnitZ()) *
                                  Eigen::AngleAxisd(roll * kPi / 180, Eigen::Vector3d::UnitY()))
                                   .toRotationMatrix();
-      IcpState s = icp.Run(RotationAbout(centroid, r), coarse, 15, 10 * options.tolerance, centroid, false);
+      RegistrationState s = registration.Run(RotationAbout(centroid, r), coarse, 15, 10 * options.tolerance, centroid);
       if (!haveBest || s.rms < best.rms)
       {
         best = s;
         haveBest = true;
       }
     }
-  const IcpState fine = icp.Run(best.transform, all, options.maximumIterations, options.tolerance, centroid, true);
+  const RegistrationState onMap =
+    registration.Run(best.transform, all, options.maximumIterations, options.tolerance, centroid);
+  const ExactDistance exact(surface);
+  const MirrorRegistration<ExactDistance> exactRegistration(exact, mirrored, options.trimFraction);
+  const RegistrationState fine =
+    exactRegistration.Run(onMap.transform, all, kExactIterations, options.tolerance, centroid);
 
   // S = T∘M, an improper rigid map. For S = rotation(φ, a)·reflection(a) the symmetric part of its
   // linear part has eigenvalues -1 (eigenvector a) and cos φ (twice); the -1 eigenvector is the

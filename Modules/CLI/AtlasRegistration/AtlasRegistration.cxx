@@ -94,7 +94,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
   options.controlPointWeight = args.Double("controlPointWeight");
   options.elementQualityFloor = args.Double("elementQualityFloor");
   options.tieWeight = args.Double("tieWeight");
-  options.symmetric = !args.Bool("asymmetric");
+  mmrep::SetSymmetryMode(options, args.String("symmetry"));
   options.progress = [&](double f) { ctx.progress.ReportRange(0.05, 0.9, f); };
   const auto result = mmrep::RegisterAtlas(atlas, atlasPlane, subject, options);
 

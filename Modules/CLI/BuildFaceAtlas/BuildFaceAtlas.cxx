@@ -8,6 +8,7 @@
 #include "mmrepLandmarkIO.h"
 #include "mmrepMeshQuality.h"
 #include "mmrepFaceModelPictures.h"
+#include "mmrepFaceModelPipeline.h"
 #include "mmrepSnapshot.h"
 #include "mmrepSurfaceExtraction.h"
 #include "mmrepSurfaceIO.h"
@@ -210,20 +211,18 @@ void Run(mmrep::cli::ModuleContext& ctx)
   ctx.progress.Start("Building the face atlas");
   // 1. Skin and bone surfaces, symmetry plane.
   const auto ct = mmrep::ReadCTImage(args.String("inputVolume"));
-  const auto thresholds = mmrep::ChooseThresholds(ct, mmrep::ThresholdMode::Automatic,
-                                                  std::numeric_limits<double>::quiet_NaN(),
-                                                  std::numeric_limits<double>::quiet_NaN());
-  mmrep::HeadSegmentationOptions seg;
-  seg.skinThreshold = thresholds.skin;
-  seg.boneThreshold = thresholds.bone;
-  const auto head = mmrep::SegmentHead(ct, seg, [&](double f) { ctx.progress.ReportRange(0.0, 0.3, f); });
-  const std::size_t slitVoxels = mmrep::CloseAxialSlits(head.skin.GetPointer(), 2);
-  std::cout << "Closed slits: " << slitVoxels << " voxels" << std::endl;
-  auto skin = mmrep::ExtractSurface(mmrep::MaskedIntensities(ct, head.skin, thresholds.skin), thresholds.skin);
-  auto skull = mmrep::ExtractSurface(mmrep::MaskedIntensities(ct, head.bone, thresholds.bone), thresholds.bone);
+  // Surfaces and plane exactly as FaceModelPipeline makes them for a speaker: the atlas's own CT
+  // then gives the atlas's plane to the last bit, and registering the atlas onto it starts from
+  // the identity.
+  const mmrep::FaceModelOptions pipeline;
+  const auto surfaces =
+    mmrep::ExtractSubjectSurfaces(ct, pipeline, [&](double f) { ctx.progress.ReportRange(0.0, 0.3, f); });
+  const auto& thresholds = surfaces.thresholds;
+  auto skin = surfaces.skin;
+  auto skull = surfaces.skull;
   const double tSurfaces = Seconds(start);
   ctx.progress.Report(0.4);
-  const auto symmetry = mmrep::EstimateSymmetryPlane(skin);
+  const auto symmetry = mmrep::EstimateSubjectPlane(skin, pipeline);
   const double tPlane = Seconds(start);
   std::cout << "Surfaces " << tSurfaces << " s, plane " << tPlane - tSurfaces << " s" << std::endl;
   std::cout << std::setprecision(6) << "Thresholds (" << thresholds.source << "): skin " << thresholds.skin << ", bone "

@@ -71,7 +71,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
   options.registration.elementQualityFloor = args.Double("elementQualityFloor");
   options.registration.tieWeight = args.Double("tieWeight");
   options.refinement.elementQualityFloor = options.registration.elementQualityFloor;
-  options.registration.symmetric = !args.Bool("asymmetric");
+  mmrep::SetSymmetryMode(options.registration, args.String("symmetry"));
   options.refine = !args.Bool("noRefinement");
   options.refinement.spacing = args.Double("lipsSpacing");
   options.repairThreshold = qualityThreshold;

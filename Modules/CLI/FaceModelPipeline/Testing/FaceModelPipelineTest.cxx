@@ -113,9 +113,15 @@ TEST(FaceModelPipelineModule, BundledCTGivesAValidModelReportAndPictures)
   EXPECT_NEAR(final.at("skull").at("mean").get<double>(), MeanDistanceWithVTK(model, "skull", out / "skull.vtp"), 1e-6);
   EXPECT_NEAR(final.at("lips").at("mean").get<double>(), MeanDistanceWithVTK(model, "lips", out / "skin.vtp"), 1e-6);
   EXPECT_NEAR(report.at("quality").at("afterRepair").at("minScaledJacobian").get<double>(), minQ, 1e-9);
-  // Accuracy floor on the atlas's own CT (the paper's repaired figures: skin 0.3, skull 0.5 mm mean).
-  EXPECT_LT(final.at("skin").at("mean").get<double>(), 0.5);
-  EXPECT_LT(final.at("skull").at("mean").get<double>(), 0.5);
+  // Accuracy on the atlas's own CT, on the fitted half (issue 13's targets: skin 0.15, skull 0.25 mm
+  // mean; the paper's repaired figures: 0.3, 0.5). The whole model's right half is the mirror image
+  // of the left, and this head is asymmetric by about 1.2 mm RMS.
+  EXPECT_EQ(report.at("fitted").get<std::string>().rfind("left half", 0), 0u);
+  const auto& half = final.at("fittedHalf");
+  EXPECT_LT(half.at("skin").at("mean").get<double>(), 0.15);
+  EXPECT_LT(half.at("skull").at("mean").get<double>(), 0.25);
+  EXPECT_LT(half.at("skin").at("nodes").get<double>(), final.at("skin").at("nodes").get<double>());
+  EXPECT_LT(final.at("skin").at("mean").get<double>(), 1.0);
   EXPECT_LT(final.at("controlPoints").at("max").get<double>(), 1.0);
   const auto values = ReadReturnParameters(ret);
   EXPECT_NEAR(std::stod(values.at("skinMeanError")), final.at("skin").at("mean").get<double>(), 1e-6);
@@ -165,16 +171,16 @@ U
   EXPECT_NE(Slurp(job / "job.frd").find("DISP"), std::string::npos);
 }
 
-// Issue 8: the speaker model made from the bundled CT, activated with CalculiX. The model for
-// simulation is registered with the tie (--tieWeight 0.05): the paper's energy alone leaves the
-// lips' interior, and the orbicularis rings in it, wavy (±1-2 mm between points 4 mm apart), and a
-// wavy lower ring rolls the lower lip back when it contracts (measured: 0.33 mm backward).
+// Issues 8 and 13: the DEFAULT speaker model made from the bundled CT (half-face registration with
+// the holding term, no tie), activated with CalculiX. The unregularised registration used to leave
+// the lips' interior, and the orbicularis rings in it, wavy, and a wavy lower ring rolled the lower
+// lip back when it contracted.
 TEST(FaceModelPipelineModule, SpeakerModelMuscleActivationWithCalculiX)
 {
   ScratchDirectory dir("activation");
   const fs::path out = dir.path() / "speaker";
   const ModuleRun pipeline = RunModuleExecutable(
-    "FaceModelPipeline", {kCT, kPoints, "--outputDirectory", out.string(), "--noPictures", "--tieWeight", "0.05"});
+    "FaceModelPipeline", {kCT, kPoints, "--outputDirectory", out.string(), "--noPictures"});
   ASSERT_EQ(pipeline.exitCode, 0) << pipeline.err;
   const std::string model = (out / "model.vtu").string();
 
