@@ -159,8 +159,9 @@ void Run(mmrep::cli::ModuleContext& ctx)
   for (double e : a.controlErrors)
     cpMean += e / static_cast<double>(a.controlErrors.size());
   std::cout << "Model: " << result.model.nodes.size() << " nodes, " << result.model.SolidElementCount()
-            << " solid elements; skin " << a.skin.mean << " mm mean, skull " << a.skull.mean << " mm mean, lips "
-            << a.lips.max << " mm max; control points " << cpMean << " mm mean; min scaled Jacobian "
+            << " solid elements; fitted " << result.fitted << ": skin " << a.skinHalf.mean << " mm mean, skull "
+            << a.skullHalf.mean << " mm mean, lips " << a.lipsHalf.max << " mm max (whole model: skin " << a.skin.mean
+            << ", skull " << a.skull.mean << ", lips max " << a.lips.max << "); control points " << cpMean << " mm mean; min scaled Jacobian "
             << result.repair.minScaledJacobianAfter << "; " << result.totalSeconds << " s\n"
             << "Results in " << out.FinalPath() << " (report.md, model.vtu/.inp/.feb/.msh"
             << (pictures ? ", pictures *.png" : "") << ")" << std::endl;
