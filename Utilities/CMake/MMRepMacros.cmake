@@ -12,7 +12,7 @@ function(mmrep_embed_text out_var)
   set(${out_var} ${${out_var}} ${out} PARENT_SCOPE)
 endfunction()
 
-# mmrep_add_cli_module(<Name> [SOURCES extra.cxx ...] [LIBRARIES lib ...])
+# mmrep_add_cli_module(<Name> [TEST_ONLY] [SOURCES extra.cxx ...] [LIBRARIES lib ...])
 #   Slicer CLI module in the current folder, from <Name>.xml and <Name>.cxx, written once for the
 #   stand-alone and the Slicer extension build (the folders come from the top-level CMakeLists):
 #   - <Name>Lib: shared library exporting Slicer's contract `XMLModuleDescription`,
@@ -21,13 +21,14 @@ endfunction()
 #   - install rules for both (RPATH relative to the installed executable);
 #   - ctest `<Name>.XmlValidatesAgainstSchema`: `<Name> --xml` passes xmllint --schema;
 #   - the folder's Testing/ subdirectory, when present and BUILD_TESTING is on.
+#   TEST_ONLY: a module for the tests, neither installed nor listed in the global property
+#   MMREP_CLI_MODULES (the product's modules).
 function(mmrep_add_cli_module name)
-  cmake_parse_arguments(M "" "" "SOURCES;LIBRARIES" ${ARGN})
+  cmake_parse_arguments(M "TEST_ONLY" "" "SOURCES;LIBRARIES" ${ARGN})
   set(xml ${CMAKE_CURRENT_SOURCE_DIR}/${name}.xml)
   set(sources ${name}.cxx ${M_SOURCES})
   mmrep_embed_text(sources INPUT ${xml} SYMBOL ${name}XML SLICER_MODULE)
   add_library(${name}Lib SHARED ${sources})
-  set_property(GLOBAL APPEND PROPERTY MMREP_CLI_MODULES ${name})
   target_link_libraries(${name}Lib PRIVATE MMRepCLI ${M_LIBRARIES})
   target_compile_definitions(${name}Lib PRIVATE MMREP_MODULE_NAME="${name}")
   set_target_properties(${name}Lib PROPERTIES
@@ -39,8 +40,11 @@ function(mmrep_add_cli_module name)
     RUNTIME_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/${MMREP_CLI_RUNTIME_DIR}
     BUILD_RPATH "${PROJECT_BINARY_DIR}/${MMREP_CLI_LIBRARY_DIR}"
     INSTALL_RPATH "$ORIGIN/${rpath}")
-  install(TARGETS ${name} RUNTIME DESTINATION ${MMREP_INSTALL_CLI_RUNTIME_DIR} COMPONENT RuntimeLibraries)
-  install(TARGETS ${name}Lib LIBRARY DESTINATION ${MMREP_INSTALL_CLI_LIBRARY_DIR} COMPONENT RuntimeLibraries)
+  if(NOT M_TEST_ONLY)
+    set_property(GLOBAL APPEND PROPERTY MMREP_CLI_MODULES ${name})
+    install(TARGETS ${name} RUNTIME DESTINATION ${MMREP_INSTALL_CLI_RUNTIME_DIR} COMPONENT RuntimeLibraries)
+    install(TARGETS ${name}Lib LIBRARY DESTINATION ${MMREP_INSTALL_CLI_LIBRARY_DIR} COMPONENT RuntimeLibraries)
+  endif()
   if(NOT BUILD_TESTING)
     return()
   endif()
