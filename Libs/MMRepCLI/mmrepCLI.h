@@ -33,7 +33,6 @@
 #pragma once
 
 #include <array>
-#include <atomic>
 #include <functional>
 #include <map>
 #include <mutex>
@@ -69,8 +68,6 @@ struct Aborted
 // Executables only (never inside Slicer's process): SIGINT and SIGTERM request an abort, which the
 // next Progress call on the module's thread turns into Aborted; a second signal kills at once.
 void InstallInterruptHandlers();
-// The signal that requested an abort, 0 when none.
-int InterruptSignal();
 
 // One <parameter> of the description (integer, double, file, image, geometry, point, …).
 struct Parameter

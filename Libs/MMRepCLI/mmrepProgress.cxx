@@ -3,11 +3,11 @@
 #include "mmrepModuleProcessInformation.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
-#include <cstring>
 #include <iostream>
 
 namespace mmrep::cli
@@ -55,8 +55,6 @@ void InstallInterruptHandlers()
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
 }
-
-int InterruptSignal() { return interruptSignal.load(); }
 
 void Progress::PollAbort() const
 {
