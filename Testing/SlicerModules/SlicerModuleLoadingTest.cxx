@@ -169,6 +169,15 @@ TEST(SlicerModuleLoading, RunsInProcessReportingToTheProgressBlock)
   fs::remove_all(dir);
 }
 
+TEST(SlicerModuleLoading, AnAddressThatIsNotOneIsACommandLineError)
+{
+  const std::string atlas = std::string(MMREP_SOURCE_DIR) + "/Resources/Atlas/FaceAtlas.vtu";
+  const auto run = RunModuleExecutable("MeshQuality", {atlas, "--processinformationaddress", "nowhere"});
+  EXPECT_EQ(run.exitCode, 2);
+  ASSERT_EQ(run.ErrLines().size(), 1u) << run.err;
+  EXPECT_NE(run.err.find("--processinformationaddress: 'nowhere' is not an address"), std::string::npos) << run.err;
+}
+
 TEST(SlicerModuleLoading, AbortFromTheProgressCallbackStopsTheRunAndLeavesNoOutput)
 {
   const fs::path dir = FreshFolder("abort");
