@@ -62,7 +62,6 @@ endfunction()
 function(mmrep_add_gtest name)
   cmake_parse_arguments(T "" "" "SOURCES;LIBRARIES" ${ARGN})
   add_executable(${name} ${T_SOURCES})
-  set_property(TARGET ${name} PROPERTY COMPILE_OPTIONS "") # not installed: no need for the prefix map
   target_link_libraries(${name} PRIVATE ${T_LIBRARIES} GTest::gtest GTest::gtest_main)
   target_compile_definitions(${name} PRIVATE
     MMREP_SOURCE_DIR="${PROJECT_SOURCE_DIR}" MMREP_BINARY_DIR="${PROJECT_BINARY_DIR}"

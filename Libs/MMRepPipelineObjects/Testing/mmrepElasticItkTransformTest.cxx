@@ -2,6 +2,7 @@
 // composed in itk::CompositeTransform, applied to a mesh by itk::TransformMeshFilter and to an
 // image by itk::ResampleImageFilter, vectors through the exact Jacobian.
 #include "mmrepElasticItkTransform.h"
+#include "mmrepItkSimilarity.h"
 
 #include <gtest/gtest.h>
 
@@ -104,6 +105,23 @@ TEST_F(ElasticItkTransformTest, ComposesInCompositeTransformWithASimilarity)
     const Point actual = composite->TransformPoint(P(x));
     for (int a = 0; a < 3; ++a)
       EXPECT_EQ(actual[a], expected[a]);
+  }
+}
+
+TEST(ItkSimilarity, MapsPointsAsTheProjectsSimilarity)
+{
+  mmrep::SimilarityTransform s;
+  s.rotation = Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
+  s.scale = 1.07;
+  s.translation = Eigen::Vector3d(4, -3, 12);
+  const auto itkSimilarity = mmrep::ToItkSimilarity(s);
+  EXPECT_NEAR(itkSimilarity->GetScale(), 1.07, 1e-14);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-80, 80);
+  for (int k = 0; k < 100; ++k)
+  {
+    const Eigen::Vector3d x(u(rng), u(rng), u(rng));
+    EXPECT_LT((E(itkSimilarity->TransformPoint(P(x))) - s.Apply(x)).norm(), 1e-11);
   }
 }
 
