@@ -2,6 +2,8 @@
 #include "mmrepCLIInternal.h"
 
 #include <atomic>
+#include <cerrno>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <system_error>
@@ -31,6 +33,23 @@ std::string FileExtension(const std::string& path)
   return name.substr(dot);
 }
 
+void RemoveStaleOutputs(const std::string& folder, const std::string& prefix)
+{
+  std::error_code ec;
+  for (fs::directory_iterator it(folder.empty() ? "." : folder, ec), end; !ec && it != end; it.increment(ec))
+  {
+    const std::string name = it->path().filename().string();
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    std::size_t digits = prefix.size();
+    while (digits < name.size() && name[digits] >= '0' && name[digits] <= '9') ++digits;
+    if (digits == prefix.size() || (digits < name.size() && name[digits] != '-' && name[digits] != '.')) continue;
+    const long pid = std::stol(name.substr(prefix.size(), digits - prefix.size()));
+    if (pid <= 0 || pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
+    std::error_code removeError;
+    fs::remove_all(it->path(), removeError); // best effort
+  }
+}
+
 AtomicOutput::AtomicOutput(std::string finalPath) : final_(std::move(finalPath))
 {
   if (final_.empty()) throw ModuleError("output file name is empty");
@@ -48,6 +67,7 @@ AtomicOutput::AtomicOutput(std::string finalPath) : final_(std::move(finalPath))
   const std::string ext = FileExtension(final_);
   const std::string name = target.filename().string();
   const std::string stem = name.substr(0, name.size() - ext.size());
+  RemoveStaleOutputs(folder.string(), stem + ".mmrep-tmp-");
   temp_ = (folder / (stem + ".mmrep-tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) +
                      name.substr(name.size() - ext.size())))
               .string();
@@ -70,6 +90,7 @@ void AtomicOutput::Commit()
   fs::rename(temp_, final_, ec);
   if (ec) throw ModuleError("cannot write '" + final_ + "': " + ec.message());
   committed_ = true;
+  detail::OutputCommitted();
 }
 
 void AtomicOutput::WriteText(const std::string& text) const

@@ -22,10 +22,14 @@
 //   --xml                     prints the description verbatim and exits 0;
 //   --help / -h               usage generated from the description;
 //   --returnparameterfile F   output-channel scalars written as `name = value` lines on success;
-//   --processinformationaddress A  accepted and ignored (Slicer passes it);
+//   --processinformationaddress A  Slicer's in-process ModuleProcessInformation block (see
+//                             mmrepModuleProcessInformation.h): progress, stage progress and message
+//                             written, its callback called, its Abort flag polled;
 //   progress on stdout: <filter-start>…</filter-start>, <filter-progress>0.42</filter-progress>,
 //   <filter-end>…</filter-end>, as Slicer parses them;
-//   errors: one line on stderr "<Module>: error: <what>", exit code 1 (2 for command-line errors).
+//   errors: one line on stderr "<Module>: error: <what>", exit code 1 (2 for command-line errors);
+//   abort (Slicer's Abort flag, or SIGINT/SIGTERM in the executables): every Progress call polls it and
+//   throws Aborted, the module's outputs are never committed, exit code 1 (128 + signal number).
 #pragma once
 
 #include <array>
@@ -34,7 +38,10 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
+
+struct ModuleProcessInformation; // Slicer's layout, mmrepModuleProcessInformation.h
 
 // Defines the module's Slicer entry point with C linkage, exported from the module's shared library:
 //   extern const char MeshQualityXML[];                       // generated from MeshQuality.xml
@@ -50,6 +57,17 @@ class ModuleError : public std::runtime_error
 public:
   using std::runtime_error::runtime_error;
 };
+
+// Thrown by Progress when the run is to stop (Slicer's Abort, SIGINT, SIGTERM). Deliberately not a
+// std::exception, so the library code's `catch (const std::exception&)` never swallows it.
+struct Aborted
+{
+  int signal = 0; // the signal that asked for it, 0 for Slicer's Abort flag
+};
+
+// Executables only (never inside Slicer's process): SIGINT and SIGTERM request an abort, which the
+// next Progress call on the module's thread turns into Aborted; a second signal kills at once.
+void InstallInterruptHandlers();
 
 // One <parameter> of the description (integer, double, file, image, geometry, point, …).
 struct Parameter
@@ -105,21 +123,32 @@ private:
   std::map<std::string, std::vector<std::string>> values_;
 };
 
-// Slicer-style progress reporting on stdout. Thread-safe; fractions are clamped to [0,1] and
-// never go backwards; repeated identical values are not printed twice.
+// Slicer-style progress reporting on stdout, and in Slicer's ModuleProcessInformation block when
+// one is given. Thread-safe; fractions are clamped to [0,1] and never go backwards; repeated
+// identical values are not printed twice. Every call made on the module's thread polls the abort
+// request and throws Aborted (calls from worker threads never throw: the next main-thread call does).
 class Progress
 {
 public:
+  Progress() = default;
+  explicit Progress(ModuleProcessInformation* information) : information_(information) {}
   void Start(const std::string& comment);
   void Report(double fraction);
-  // Report progress of a sub-stage mapped into [from, to] of the whole.
-  void ReportRange(double from, double to, double fraction) { Report(from + (to - from) * fraction); }
+  // Report progress of a sub-stage mapped into [from, to] of the whole (StageProgress = fraction).
+  void ReportRange(double from, double to, double fraction);
+  // Names the current stage (ProgressMessage in Slicer); polls the abort request.
+  void Stage(const std::string& name);
   void End();
+  void PollAbort() const; // throws Aborted when requested and called on the module's thread
 
 private:
+  void Update(double overall, double stage); // with mutex_ held
   std::mutex mutex_;
   std::string comment_;
   int last_ = -1; // last printed value in 1/1000
+  ModuleProcessInformation* information_ = nullptr;
+  std::thread::id owner_ = std::this_thread::get_id();
+  double startTime_ = 0;
 };
 
 // Output scalars (channel=output, no flag/index), written to --returnparameterfile on success.
@@ -172,6 +201,14 @@ private:
   std::string final_, temp_;
   bool committed_ = false;
 };
+
+// Removes, in `folder`, what runs that died (kill -9, a crash) left behind: entries named
+// <prefix><pid>, <prefix><pid>-… or <prefix><pid>.… whose process no longer exists.
+void RemoveStaleOutputs(const std::string& folder, const std::string& prefix);
+
+// A file shipped with the modules (the default atlas), by its path relative to the folder of the
+// module's shared library: found the same way in the build tree, the install tree and Slicer.
+std::string ModuleResourcePath(const std::string& relativePath);
 
 // Lower-cased extension including the dot; knows double extensions (.nii.gz, .mrk.json).
 std::string FileExtension(const std::string& path);

@@ -25,6 +25,10 @@ std::string Describe(const Parameter& p);
 // Throws ModuleError naming the parameter when a value does not fit its declaration.
 void Validate(const Parameter& p, const std::vector<std::string>& values);
 
+// Abort bookkeeping of one run: polls stop throwing once an output is committed (mmrepProgress.cxx).
+void BeginRun();
+void OutputCommitted();
+
 // Silences ITK's and VTK's own console output for the rest of the process (see mmrepQuietConsoles.cxx).
 void SilenceToolkitConsoles();
 

@@ -1,8 +1,13 @@
 // Slicer progress protocol on stdout, and the output scalars reported through --returnparameterfile.
 #include "mmrepCLIInternal.h"
+#include "mmrepModuleProcessInformation.h"
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <csignal>
+#include <cstdio>
 #include <iostream>
 
 namespace mmrep::cli
@@ -21,25 +26,89 @@ std::string Escape(const std::string& text)
   }
   return out;
 }
+
+double Clamp01(double f) { return f >= 0.0 ? std::min(f, 1.0) : 0.0; } // NaN -> 0
+
+double Seconds()
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// Set by the signal handler, read by every Progress call (lock-free, so async-signal-safe).
+std::atomic<int> interruptSignal{0};
+
+extern "C" void OnInterrupt(int signal) { interruptSignal.store(signal); }
+
+// Once a run has committed an output, it finishes: aborting then would leave a partial set.
+std::atomic<bool> committed{false};
 } // namespace
+
+void detail::BeginRun() { committed.store(false); }
+void detail::OutputCommitted() { committed.store(true); }
+
+void InstallInterruptHandlers()
+{
+  struct sigaction action = {};
+  action.sa_handler = OnInterrupt;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESETHAND; // a second signal terminates at once
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+void Progress::PollAbort() const
+{
+  if (std::this_thread::get_id() != owner_ || committed.load()) return; // never unwind a worker thread
+  if (const int signal = interruptSignal.load()) throw Aborted{signal};
+  if (information_ && *static_cast<volatile unsigned char*>(&information_->Abort)) throw Aborted{0};
+}
+
+void Progress::Update(double overall, double stage)
+{
+  if (!information_) return;
+  information_->Progress = static_cast<float>(overall);
+  information_->StageProgress = static_cast<float>(stage);
+  information_->ElapsedTime = Seconds() - startTime_;
+  if (information_->ProgressCallbackFunction)
+    information_->ProgressCallbackFunction(information_->ProgressCallbackClientData);
+}
 
 void Progress::Start(const std::string& comment)
 {
+  PollAbort();
   std::lock_guard<std::mutex> lock(mutex_);
   comment_ = comment.empty() ? "Running" : Escape(comment);
   std::cout << "<filter-start>\n<filter-name>" << comment_ << "</filter-name>\n<filter-comment>" << comment_
             << "</filter-comment>\n</filter-start>" << std::endl;
+  startTime_ = Seconds();
+  if (information_)
+  {
+    std::snprintf(information_->ProgressMessage, sizeof(information_->ProgressMessage), "%s", comment_.c_str());
+    Update(0.0, 0.0);
+  }
 }
 
-void Progress::Report(double fraction)
+void Progress::Report(double fraction) { ReportRange(0.0, 1.0, fraction); }
+
+void Progress::ReportRange(double from, double to, double fraction)
 {
-  if (!(fraction >= 0.0)) // also catches NaN
-    fraction = 0.0;
-  const int value = static_cast<int>(std::lround(std::min(fraction, 1.0) * 1000.0));
+  PollAbort();
+  const double overall = Clamp01(from + (to - from) * Clamp01(fraction));
+  const int value = static_cast<int>(std::lround(overall * 1000.0));
   std::lock_guard<std::mutex> lock(mutex_);
   if (value <= last_) return; // never backwards, never twice
   last_ = value;
   std::cout << "<filter-progress>" << detail::FormatDouble(value / 1000.0) << "</filter-progress>" << std::endl;
+  Update(value / 1000.0, Clamp01(fraction));
+}
+
+void Progress::Stage(const std::string& name)
+{
+  PollAbort();
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!information_) return;
+  std::snprintf(information_->ProgressMessage, sizeof(information_->ProgressMessage), "%s", name.c_str());
+  Update(std::max(last_, 0) / 1000.0, 0.0);
 }
 
 void Progress::End()
@@ -50,6 +119,7 @@ void Progress::End()
   last_ = 1000;
   std::cout << "<filter-end>\n<filter-name>" << comment_ << "</filter-name>\n</filter-end>" << std::endl;
   comment_.clear();
+  Update(1.0, 1.0);
 }
 
 void ReturnParameters::Set(const std::string& name, double value) { values_[name] = detail::FormatDouble(value); }

@@ -1,9 +1,11 @@
 // RunModule: command line (TCLAP) from the XML description, error reporting, return parameters.
 #include "mmrepCLIInternal.h"
+#include "mmrepModuleProcessInformation.h"
 
 #include <itkMacro.h> // itk::ExceptionObject
 #include <tclap/CmdLine.h>
 
+#include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -120,6 +122,7 @@ struct ParsedCommandLine
 {
   std::map<std::string, std::vector<std::string>> values;
   std::string returnParameterFile;
+  ModuleProcessInformation* processInformation = nullptr;
 };
 
 // Builds a TCLAP command line from the description and parses argv. Throws TCLAP exceptions.
@@ -135,7 +138,7 @@ ParsedCommandLine Parse(int argc, char* argv[], const ModuleDescription& d, cons
   TCLAP::SwitchArg xml("", "xml", "Print the XML description and exit", false);
   TCLAP::ValueArg<std::string> returnFile(
       "", "returnparameterfile", "File where the output scalars are written as name = value", false, "", "file");
-  TCLAP::ValueArg<std::string> processAddress("", "processinformationaddress", "Address used by Slicer (ignored)",
+  TCLAP::ValueArg<std::string> processAddress("", "processinformationaddress", "Address of Slicer's in-process progress block",
                                               false, "", "address");
   cmd.add(xml);
   cmd.add(returnFile);
@@ -193,6 +196,14 @@ ParsedCommandLine Parse(int argc, char* argv[], const ModuleDescription& d, cons
 
   ParsedCommandLine parsed;
   parsed.returnParameterFile = returnFile.getValue();
+  if (processAddress.isSet() && !processAddress.getValue().empty())
+  {
+    // Slicer writes the address with %p (as its GenerateCLP reads it back).
+    void* address = nullptr;
+    if (std::sscanf(processAddress.getValue().c_str(), "%p", &address) != 1 || address == nullptr)
+      throw ModuleError("--processinformationaddress: '" + processAddress.getValue() + "' is not an address");
+    parsed.processInformation = static_cast<ModuleProcessInformation*>(address);
+  }
   for (const auto& [p, arg] : args)
   {
     if (!arg->isSet()) continue;
@@ -237,6 +248,7 @@ int RunModule(int argc, char* argv[], const char* xmlDescription, const std::fun
     }
 
   detail::SilenceToolkitConsoles();
+  detail::BeginRun();
   ModuleDescription description;
   try
   {
@@ -271,11 +283,23 @@ int RunModule(int argc, char* argv[], const char* xmlDescription, const std::fun
 
   try
   {
-    ModuleContext context{module, description, std::move(arguments), {}, {}};
+    ModuleContext context{module, description, std::move(arguments), Progress(parsed.processInformation), {}};
     body(context);
     context.progress.End();
     if (!parsed.returnParameterFile.empty())
       WriteReturnParameters(parsed.returnParameterFile, description, context.outputs);
+  }
+  catch (const Aborted& a) // outputs not committed were removed while unwinding
+  {
+    std::cout.flush();
+    if (a.signal == 0)
+    {
+      std::cerr << module << ": aborted" << std::endl;
+      return 1;
+    }
+    std::cerr << module << ": interrupted by " << (a.signal == SIGINT ? "SIGINT" : a.signal == SIGTERM ? "SIGTERM" : "a signal")
+              << ", nothing written" << std::endl;
+    return 128 + a.signal;
   }
   catch (const itk::ExceptionObject& e)
   {

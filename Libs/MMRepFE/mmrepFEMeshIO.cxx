@@ -4,6 +4,7 @@
 // mmrepGmshWriter.cxx). Writers never leave a partial file behind when they fail.
 #include "mmrepFEMeshIO.h"
 
+#include "mmrepCoordinateSpace.h"
 #include "mmrepFEExport.h"
 
 #include <vtkLogger.h>
@@ -123,7 +124,7 @@ vtkSmartPointer<vtkUnstructuredGrid> ReadXML(const std::string& path)
   return grid;
 }
 
-vtkSmartPointer<vtkUnstructuredGrid> ReadLegacy(const std::string& path)
+vtkSmartPointer<vtkUnstructuredGrid> ReadLegacy(const std::string& path, FileSpace& space)
 {
   VTKErrors errors;
   vtkNew<vtkUnstructuredGridReader> reader;
@@ -136,6 +137,7 @@ vtkSmartPointer<vtkUnstructuredGrid> ReadLegacy(const std::string& path)
   if (errors.Any() || reader->GetErrorCode() != 0)
     throw std::runtime_error(path + ": cannot read: " + (errors.Any() ? errors.First() : "read error"));
   vtkSmartPointer<vtkUnstructuredGrid> grid = reader->GetOutput();
+  space = SpaceFromHeader(reader->GetHeader());
   return grid;
 }
 
@@ -189,7 +191,15 @@ FEMesh ReadFEMesh(const std::string& path)
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw std::runtime_error(path + ": file not found");
-  const auto grid = ext == ".vtu" ? ReadXML(path) : ReadLegacy(path);
+  FileSpace space = FileSpace::Untagged;
+  vtkSmartPointer<vtkUnstructuredGrid> grid;
+  if (ext == ".vtu")
+  {
+    grid = ReadXML(path);
+    space = SpaceFromFieldData(grid);
+  }
+  else
+    grid = ReadLegacy(path, space);
   FEMesh mesh;
   try
   {
@@ -198,6 +208,13 @@ FEMesh ReadFEMesh(const std::string& path)
   catch (const std::exception& e)
   {
     throw std::runtime_error(path + ": " + e.what());
+  }
+  if (space == FileSpace::RAS) // written in RAS (older Slicer): our meshes are LPS
+  {
+    for (auto& x : mesh.nodes)
+      x = Point3(-x.x(), -x.y(), x.z());
+    for (auto& l : mesh.landmarks)
+      l.position = Point3(-l.position.x(), -l.position.y(), l.position.z());
   }
   if (mesh.Empty())
     throw std::runtime_error(path + ": contains no mesh (" + std::to_string(mesh.nodes.size()) + " nodes, " +
@@ -226,12 +243,15 @@ void WriteFEMesh(const FEMesh& mesh, const std::string& path, const std::string&
     writer->EncodeAppendedDataOff(); // raw binary
     writer->SetHeaderTypeToUInt64();
     writer->SetCompressorTypeToZLib();
-    WriteVTK(writer.Get(), ToVTK(mesh), path);
+    auto grid = ToVTK(mesh);
+    TagLPSInFieldData(grid); // Slicer's convention: the coordinate system in the field data
+    WriteVTK(writer.Get(), grid, path);
   }
   else if (f == "vtk")
   {
     vtkNew<vtkUnstructuredGridWriter> writer;
     writer->SetFileTypeToBinary(); // exact doubles
+    writer->SetHeader((std::string("MMRep FE mesh ") + LPSHeaderTag()).c_str()); // Slicer's convention
     WriteVTK(writer.Get(), ToVTK(mesh), path);
   }
   else if (f == "inp")

@@ -1,6 +1,7 @@
 // Triangle surfaces through VTK's readers and writers, chosen by file extension.
 #include "mmrepSurfaceIO.h"
 
+#include "mmrepCoordinateSpace.h"
 #include "mmrepIOPath.h"
 
 #include <vtkAlgorithm.h>
@@ -79,19 +80,6 @@ std::string SurfaceFormat(const std::string& path)
   return {};
 }
 
-// Slicer writes "SPACE=RAS" or "SPACE=LPS" in the legacy header; only RAS needs converting.
-void FlipXY(vtkPolyData* surface)
-{
-  vtkPoints* points = surface->GetPoints();
-  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    points->GetPoint(i, p);
-    points->SetPoint(i, -p[0], -p[1], p[2]);
-  }
-  points->Modified();
-}
-
 } // namespace
 
 vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path)
@@ -155,9 +143,12 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path)
   }
   auto surface = vtkSmartPointer<vtkPolyData>::New();
   surface->DeepCopy(output);
-  if (legacy && legacy->GetHeader() && std::string(legacy->GetHeader()).find("SPACE=RAS") != std::string::npos)
+  // Slicer's SPACE tag: legacy header, or field data of .vtp; RAS files are flipped to LPS.
+  const FileSpace space = legacy ? SpaceFromHeader(legacy->GetHeader()) : SpaceFromFieldData(surface);
+  RemoveSpaceTag(surface);
+  if (space == FileSpace::RAS)
   {
-    FlipXY(surface);
+    FlipRASToLPS(surface->GetPoints());
   }
   return surface;
 }
@@ -189,7 +180,10 @@ void WriteSurface(vtkPolyData* surface, const std::string& path, const std::stri
   if (format == "vtp")
   {
     auto w = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-    w->SetInputData(surface);
+    auto tagged = vtkSmartPointer<vtkPolyData>::New();
+    tagged->ShallowCopy(surface);
+    TagLPSInFieldData(tagged); // Slicer's convention for .vtp: SPACE in the field data
+    w->SetInputData(tagged);
     w->SetFileName(path.c_str());
     // LZ4: files about as small as zlib's for meshes, compressed several times faster (VTK >= 8 reads it).
     w->SetCompressorTypeToLZ4();
@@ -202,7 +196,7 @@ void WriteSurface(vtkPolyData* surface, const std::string& path, const std::stri
     w->SetInputData(surface);
     w->SetFileName(path.c_str());
     w->SetFileTypeToBinary(); // full double precision
-    w->SetHeader("MMRep surface SPACE=LPS");
+    w->SetHeader((std::string("MMRep surface ") + LPSHeaderTag()).c_str());
     writer = w;
     write = [w] { return w->Write(); };
   }

@@ -224,7 +224,17 @@ std::vector<std::vector<double>> ComputeQuality(const FEMesh& mesh, const std::v
   std::vector<std::thread> workers;
   for (unsigned t = 1; t < threads; ++t)
     workers.emplace_back(work, false);
-  work(true);
+  try
+  {
+    work(true);
+  }
+  catch (...) // the progress callback may abort the run: stop the workers before unwinding
+  {
+    next = chunks;
+    for (std::thread& w : workers)
+      w.join();
+    throw;
+  }
   for (std::thread& w : workers)
     w.join();
   if (options.progress)

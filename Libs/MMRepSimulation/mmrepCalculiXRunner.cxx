@@ -1,11 +1,17 @@
 // ccx runner: temporary job folder, live log parsing for progress, convergence checks.
 #include "mmrepCalculiXRunner.h"
 
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -52,6 +58,59 @@ public:
 private:
   fs::path path_;
   bool keep_;
+};
+// ccx as a child process whose output is read through a pipe. If the run is left early (an
+// exception from the progress callback: an abort), the destructor stops ccx before the job folder
+// is removed.
+class Child
+{
+public:
+  explicit Child(const std::string& command)
+  {
+    int fds[2];
+    if (::pipe2(fds, O_CLOEXEC) != 0)
+      throw std::runtime_error("cannot create a pipe for CalculiX");
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
+    std::string shell = "/bin/sh", flag = "-c", cmd = command;
+    char* argv[] = {shell.data(), flag.data(), cmd.data(), nullptr};
+    const int error = ::posix_spawn(&pid_, "/bin/sh", &actions, nullptr, argv, environ);
+    posix_spawn_file_actions_destroy(&actions);
+    ::close(fds[1]);
+    fd_ = fds[0];
+    if (error != 0)
+    {
+      pid_ = -1;
+      throw std::runtime_error("cannot start CalculiX (" + std::string(std::strerror(error)) + ")");
+    }
+  }
+  ~Child()
+  {
+    if (pid_ > 0)
+    {
+      ::kill(pid_, SIGTERM);
+      Wait();
+    }
+    if (fd_ >= 0)
+      ::close(fd_);
+  }
+  Child(const Child&) = delete;
+  Child& operator=(const Child&) = delete;
+  int fd() const { return fd_; }
+  int Wait() // the wait status
+  {
+    int status = 0;
+    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR)
+    {
+    }
+    pid_ = -1;
+    return status;
+  }
+
+private:
+  pid_t pid_ = -1;
+  int fd_ = -1;
 };
 } // namespace
 
@@ -105,13 +164,13 @@ CalculiXRun RunCalculiX(const std::string& deck, const RunOptions& options)
   if (options.keepDirectory)
     run.directory = dir.path().string();
   const std::string threads = std::to_string(options.threads);
+  // exec: the shell becomes ccx, so that stopping the child stops ccx.
   const std::string cmd = "cd " + Quote(dir.path().string()) + " && OMP_NUM_THREADS=" + threads +
-                          " CCX_NPROC_STIFFNESS=" + threads + " CCX_NPROC_EQUATION_SOLVER=" + threads + " " +
+                          " CCX_NPROC_STIFFNESS=" + threads + " CCX_NPROC_EQUATION_SOLVER=" + threads + " exec " +
                           Quote(ccx) + " -i job 2>&1 < /dev/null";
   const auto start = std::chrono::steady_clock::now();
-  FILE* pipe = ::popen(cmd.c_str(), "r");
-  if (pipe == nullptr)
-    throw std::runtime_error("cannot start CalculiX '" + ccx + "'");
+  Child child(cmd);
+  double lastFraction = 0;
   char buffer[4096];
   std::string pending;
   bool finished = false;
@@ -124,11 +183,12 @@ CalculiXRun RunCalculiX(const std::string& deck, const RunOptions& options)
     {
       try
       {
-        options.progress(std::stod(line.substr(line.find('=') + 1)));
+        lastFraction = std::stod(line.substr(line.find('=') + 1));
       }
       catch (const std::exception&)
       {
       }
+      options.progress(lastFraction);
     }
     else if (line.find("increment size decreased") != std::string::npos ||
              line.find("too slow convergence") != std::string::npos || line.find("divergence") != std::string::npos)
@@ -156,9 +216,25 @@ CalculiXRun RunCalculiX(const std::string& deck, const RunOptions& options)
       appendNext = 3;
     }
   };
-  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr)
+  for (;;)
   {
-    pending += buffer;
+    // Wake up at least every 0.2 s so the progress callback can abort a long solve.
+    pollfd p{child.fd(), POLLIN, 0};
+    const int ready = ::poll(&p, 1, 200);
+    if (ready < 0 && errno != EINTR)
+      break;
+    if (ready <= 0)
+    {
+      if (options.progress)
+        options.progress(lastFraction);
+      continue;
+    }
+    const ssize_t n = ::read(child.fd(), buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR)
+      continue;
+    if (n <= 0)
+      break;
+    pending.append(buffer, static_cast<std::size_t>(n));
     for (std::size_t nl; (nl = pending.find('\n')) != std::string::npos;)
     {
       handleLine(pending.substr(0, nl));
@@ -167,7 +243,9 @@ CalculiXRun RunCalculiX(const std::string& deck, const RunOptions& options)
   }
   if (!pending.empty())
     handleLine(pending);
-  const int status = ::pclose(pipe);
+  const int status = child.Wait();
+  if (options.progress) // ccx may have stopped because the run is interrupted (Ctrl-C reaches both)
+    options.progress(lastFraction);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
   if (run.exitCode == 127)

@@ -95,8 +95,7 @@ TEST(CLIModule, ValuesReachTheBody)
       RunModule(dir, "in.nrrd report.txt m.vtk t.tfm tab.csv -i 4 --fraction 0.75 --scale -2.5 -v --label 'two words' "
                      "--size 7,8 --weights 0.5 --spacing 0.2,0.3,0.4 --tags a,b,c --order 1 --ratio 1.5 "
                      "--sigma 2.5 --mode accurate --workDir /tmp --roi 1,2,3,4,5,6 "
-                     "--seedsRAS 10,-20.5,30 --seedsRAS -1,0,2 --seedLPS 1,2,3 "
-                     "--processinformationaddress 0x1234");
+                     "--seedsRAS 10,-20.5,30 --seedsRAS -1,0,2 --seedLPS 1,2,3");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.err, "");
   auto report = ReadReport(dir / "report.txt");

@@ -12,6 +12,8 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkStringArray.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtkUnstructuredGridWriter.h>
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
@@ -101,6 +103,60 @@ TEST(FEMeshIO, LegacyVtkRoundTripIsExact)
   const auto tmp = (dir / "mesh.tmp").string();
   WriteFEMesh(mesh, tmp, "vtk");
   EXPECT_EQ(mmrep::testing::ReadText(tmp), mmrep::testing::ReadText(path));
+}
+
+// Slicer's SPACE tag (vtkMRMLModelStorageNode): field data of .vtu, header of legacy .vtk; meshes
+// Slicer wrote in RAS come back in LPS, nodes and landmarks alike.
+TEST(FEMeshIO, SlicersSpaceTagIsWrittenAndRasFilesAreConverted)
+{
+  const auto dir = mmrep::testing::ScratchDir("FEMeshIO");
+  const FEMesh mesh = MakeTestMesh();
+  ASSERT_FALSE(mesh.landmarks.empty());
+  const auto vtu = (dir / "tagged.vtu").string(), vtk = (dir / "tagged.vtk").string();
+  WriteFEMesh(mesh, vtu);
+  WriteFEMesh(mesh, vtk);
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(vtu.c_str());
+  reader->Update();
+  auto* tag = vtkStringArray::SafeDownCast(reader->GetOutput()->GetFieldData()->GetAbstractArray("SPACE"));
+  ASSERT_NE(tag, nullptr);
+  EXPECT_EQ(tag->GetValue(0), "LPS");
+  EXPECT_NE(mmrep::testing::ReadText(vtk).find("SPACE=LPS"), std::string::npos);
+
+  // The same grid tagged RAS, as older Slicer versions wrote it.
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->DeepCopy(reader->GetOutput());
+  vtkNew<vtkPoints> ras;
+  ras->SetDataTypeToDouble();
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+  {
+    const double* p = grid->GetPoint(i);
+    ras->InsertNextPoint(-p[0], -p[1], p[2]);
+  }
+  grid->SetPoints(ras);
+  tag->SetValue(0, "RAS");
+  grid->GetFieldData()->RemoveArray("SPACE");
+  grid->GetFieldData()->AddArray(tag);
+  if (auto* positions = vtkDataArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("MMRep.LandmarkPositions")))
+    for (vtkIdType i = 0; i < positions->GetNumberOfTuples(); ++i)
+    {
+      positions->SetComponent(i, 0, -positions->GetComponent(i, 0));
+      positions->SetComponent(i, 1, -positions->GetComponent(i, 1));
+    }
+  const auto rasVtu = (dir / "ras.vtu").string(), rasVtk = (dir / "ras.vtk").string();
+  vtkNew<vtkXMLUnstructuredGridWriter> xml;
+  xml->SetInputData(grid);
+  xml->SetFileName(rasVtu.c_str());
+  ASSERT_EQ(xml->Write(), 1);
+  grid->GetFieldData()->RemoveArray("SPACE");
+  vtkNew<vtkUnstructuredGridWriter> legacy;
+  legacy->SetInputData(grid);
+  legacy->SetFileName(rasVtk.c_str());
+  legacy->SetFileTypeToBinary();
+  legacy->SetHeader("3D Slicer output. SPACE=RAS");
+  ASSERT_EQ(legacy->Write(), 1);
+  mmrep::testing::ExpectSameMesh(mesh, ReadFEMesh(rasVtu));
+  mmrep::testing::ExpectSameMesh(mesh, ReadFEMesh(rasVtk));
 }
 
 TEST(FEMeshIO, GridShowsLayersAndSetMasks)

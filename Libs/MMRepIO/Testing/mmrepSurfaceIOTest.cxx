@@ -3,14 +3,17 @@
 #include "mmrepTestDir.h"
 
 #include <vtkCellArray.h>
+#include <vtkFieldData.h>
 #include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyDataWriter.h>
 #include <vtkSphereSource.h>
+#include <vtkStringArray.h>
 #include <vtkTransform.h>
 #include <vtkTransformPolyDataFilter.h>
+#include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <gtest/gtest.h>
@@ -156,6 +159,54 @@ TEST(SurfaceIO, SlicerRasLegacyFileIsConvertedToLps)
   EXPECT_DOUBLE_EQ(s->GetPoint(0)[2], 3);
   EXPECT_DOUBLE_EQ(s->GetPoint(2)[0], 7);
   EXPECT_DOUBLE_EQ(s->GetPoint(2)[1], -8);
+}
+
+// Slicer's convention for XML files (vtkMRMLModelStorageNode): a string array "SPACE" in the field data.
+TEST(SurfaceIO, VtpCarriesSlicersSpaceTagAndRasFilesAreConverted)
+{
+  const fs::path dir = mmrep::test::ScratchDir();
+  vtkNew<vtkPolyData> triangle;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(1, 2, 3);
+  points->InsertNextPoint(4, 5, 6);
+  points->InsertNextPoint(-7, 8, 9);
+  triangle->SetPoints(points);
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType ids[3] = {0, 1, 2};
+  polys->InsertNextCell(3, ids);
+  triangle->SetPolys(polys);
+  // Ours: tagged LPS, read back unchanged, the tag not left in the data.
+  const std::string ours = (dir / "ours.vtp").string();
+  mmrep::WriteSurface(triangle, ours);
+  vtkNew<vtkXMLPolyDataReader> raw;
+  raw->SetFileName(ours.c_str());
+  raw->Update();
+  auto* tag = vtkStringArray::SafeDownCast(raw->GetOutput()->GetFieldData()->GetAbstractArray("SPACE"));
+  ASSERT_NE(tag, nullptr);
+  ASSERT_EQ(tag->GetNumberOfValues(), 1);
+  EXPECT_EQ(tag->GetValue(0), "LPS");
+  EXPECT_EQ(triangle->GetFieldData()->GetAbstractArray("SPACE"), nullptr) << "the input was modified";
+  auto back = mmrep::ReadSurface(ours);
+  EXPECT_EQ(back->GetFieldData()->GetAbstractArray("SPACE"), nullptr);
+  EXPECT_DOUBLE_EQ(back->GetPoint(2)[0], -7);
+  // Slicer before 4.11 wrote RAS: converted to LPS.
+  vtkNew<vtkPolyData> ras;
+  ras->DeepCopy(triangle);
+  vtkNew<vtkStringArray> rasTag;
+  rasTag->SetName("SPACE");
+  rasTag->InsertNextValue("RAS");
+  ras->GetFieldData()->AddArray(rasTag);
+  const std::string theirs = (dir / "ras.vtp").string();
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(ras);
+  writer->SetFileName(theirs.c_str());
+  ASSERT_EQ(writer->Write(), 1);
+  auto converted = mmrep::ReadSurface(theirs);
+  EXPECT_DOUBLE_EQ(converted->GetPoint(0)[0], -1);
+  EXPECT_DOUBLE_EQ(converted->GetPoint(0)[1], -2);
+  EXPECT_DOUBLE_EQ(converted->GetPoint(0)[2], 3);
+  EXPECT_DOUBLE_EQ(converted->GetPoint(2)[0], 7);
+  EXPECT_DOUBLE_EQ(converted->GetPoint(2)[1], -8);
 }
 
 TEST(SurfaceIO, BadInputsThrowNamingThePath)

@@ -20,6 +20,8 @@ FaceModelOutputDirectory::FaceModelOutputDirectory(const std::string& path)
   fs::create_directories(parent, ec);
   if (ec)
     throw ModuleError(parent.string() + ": cannot create the output directory's parent (" + ec.message() + ")");
+  mmrep::cli::RemoveStaleOutputs(parent.string(), "." + final_.filename().string() + ".partial-");
+  mmrep::cli::RemoveStaleOutputs(parent.string(), "." + final_.filename().string() + ".old-");
   staging_ = parent / ("." + final_.filename().string() + ".partial-" + std::to_string(::getpid()));
   fs::remove_all(staging_, ec);
   if (!fs::create_directory(staging_, ec) || ec)

@@ -53,7 +53,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
   FaceModelOutputDirectory out(args.String("outputDirectory"));
 
   ctx.progress.Start("Face model pipeline");
-  const std::string atlasPath = args.Given("atlas") ? args.String("atlas") : std::string(MMREP_DEFAULT_ATLAS);
+  const std::string atlasPath = args.Given("atlas") ? args.String("atlas") : mmrep::cli::ModuleResourcePath(MMREP_DEFAULT_ATLAS);
   const auto atlas = mmrep::ReadFEMesh(atlasPath);
   const auto controlPoints = mmrep::ReadLandmarks(args.String("controlPoints"));
   const auto ct = mmrep::ReadCTImage(args.String("inputVolume"));
@@ -80,6 +80,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
     if (stage != lastStage)
     {
       std::cout << "Stage: " << stage << std::endl;
+      ctx.progress.Stage(stage);
       lastStage = stage;
     }
     ctx.progress.ReportRange(0.05, 0.85, f);
