@@ -63,10 +63,16 @@ void RequireDisplay(const std::string& pngPath)
   const char* display = std::getenv("DISPLAY");
   if (display == nullptr || *display == '\0')
     throw std::runtime_error("no X display for rendering " + pngPath + ": run under xvfb-run -a");
+  // Mesa's software rasteriser (llvmpipe, what Xvfb offers) renders with worker threads that its
+  // exit handlers tear down; on a loaded machine a module now and then ended with SIGABRT after
+  // writing its pictures. One picture needs no threads: render in the calling thread. A value the
+  // user set is kept.
+  setenv("LP_NUM_THREADS", "0", 0);
 }
 
 void WriteWindowPNG(vtkRenderWindow* window, const std::string& pngPath)
 {
+  RequireDisplay(pngPath);
   window->SetOffScreenRendering(1);
   window->Render();
   vtkNew<vtkWindowToImageFilter> grab;
