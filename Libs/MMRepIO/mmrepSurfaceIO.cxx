@@ -2,6 +2,7 @@
 #include "mmrepSurfaceIO.h"
 
 #include "mmrepIOPath.h"
+#include "mmrepResourceBudget.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
@@ -140,7 +141,17 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path)
     Fail(path, "unknown surface file extension (supported: .vtp, .vtk, .stl, .ply, .obj)");
   }
   Watch(reader, errors);
-  reader->Update();
+  try
+  {
+    if (format == "vtp")
+      CheckVTKXMLCounts(path, 64, 64); // coordinates, normals and our copy; a triangle's ids
+    reader->Update();
+  }
+  catch (const std::bad_alloc&)
+  {
+    Fail(path, "not enough memory to read the surface it declares");
+  }
+
   if (!errors->message.empty() || reader->GetErrorCode() != vtkErrorCode::NoError)
   {
     const std::string why = !errors->message.empty()
