@@ -61,6 +61,7 @@ AtomicOutput::AtomicOutput(std::string finalPath) : final_(std::move(finalPath))
   if (::access(folder.c_str(), W_OK) != 0)
     throw ModuleError("cannot write '" + final_ + "': folder '" + folder.string() + "' is not writable");
   if (fs::is_directory(target, ec)) throw ModuleError("cannot write '" + final_ + "': it is a folder");
+  CheckOutputPath(final_, false);
 
   // Same folder (so the rename is atomic), same extension (so writers pick the same format).
   static std::atomic<unsigned> counter{0};
@@ -82,11 +83,33 @@ AtomicOutput::~AtomicOutput()
   }
 }
 
-void AtomicOutput::Commit()
+void AtomicOutput::Commit() { Commit(false); }
+
+void AtomicOutput::CommitEvenIfRunFails() { Commit(true); }
+
+void AtomicOutput::Commit(bool evenIfRunFails)
 {
   if (committed_) return;
   std::error_code ec;
   if (!fs::exists(temp_, ec)) throw ModuleError("cannot write '" + final_ + "': nothing was written");
+  // Inside a module run the rename waits until every step succeeded (mmrepOutputSafety.cxx).
+  const std::string temp = temp_, final = final_;
+  if (DeferPublication(
+          final_,
+          [temp, final] {
+            std::error_code e;
+            fs::rename(temp, final, e);
+            if (e) throw ModuleError("cannot write '" + final + "': " + e.message());
+          },
+          [temp] {
+            std::error_code e;
+            fs::remove(temp, e);
+          },
+          evenIfRunFails))
+  {
+    committed_ = true;
+    return;
+  }
   fs::rename(temp_, final_, ec);
   if (ec) throw ModuleError("cannot write '" + final_ + "': " + ec.message());
   committed_ = true;

@@ -194,10 +194,13 @@ public:
   const std::string& TempPath() const { return temp_; }
   const std::string& FinalPath() const { return final_; }
   void Commit(); // throws ModuleError if the rename fails
+  // For an output that explains a failure (a repair report): published even when the run fails.
+  void CommitEvenIfRunFails();
   // Writes `text` to the temporary file (a report); throws ModuleError if it cannot.
   void WriteText(const std::string& text) const;
 
 private:
+  void Commit(bool evenIfRunFails);
   std::string final_, temp_;
   bool committed_ = false;
 };
@@ -209,6 +212,15 @@ void RemoveStaleOutputs(const std::string& folder, const std::string& prefix);
 // A file shipped with the modules (the default atlas), by its path relative to the folder of the
 // module's shared library: found the same way in the build tree, the install tree and Slicer.
 std::string ModuleResourcePath(const std::string& relativePath);
+
+// Output safety inside RunModule (mmrepOutputSafety.cxx); both do nothing outside a module run.
+// Throws ModuleError if `path`, an output file or folder, is, contains or lies inside an input of
+// the run, or is already another of its outputs. AtomicOutput calls it.
+void CheckOutputPath(const std::string& path, bool folder);
+// Schedules `publish` for when the whole run has succeeded (else `discard`; `publish` too when
+// evenOnFailure) and returns true; returns false outside a run: the caller publishes at once.
+bool DeferPublication(const std::string& finalPath, std::function<void()> publish, std::function<void()> discard,
+                      bool evenOnFailure = false);
 
 // Lower-cased extension including the dot; knows double extensions (.nii.gz, .mrk.json).
 std::string FileExtension(const std::string& path);

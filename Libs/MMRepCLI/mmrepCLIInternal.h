@@ -3,6 +3,7 @@
 
 #include "mmrepCLI.h"
 
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,6 +29,14 @@ void Validate(const Parameter& p, const std::vector<std::string>& values);
 // Abort bookkeeping of one run: polls stop throwing once an output is committed (mmrepProgress.cxx).
 void BeginRun();
 void OutputCommitted();
+
+// The output transaction of a module run (mmrepOutputSafety.cxx): Begin checks the command line's
+// paths (throws ModuleError), Publish renames every scheduled output into place, Discard removes them.
+void BeginOutputTransaction(const ModuleDescription& description,
+                            const std::map<std::string, std::vector<std::string>>& values,
+                            const std::string& returnParameterFile);
+void PublishOutputs();
+void DiscardOutputs();
 
 // Silences ITK's and VTK's own console output for the rest of the process (see mmrepQuietConsoles.cxx).
 void SilenceToolkitConsoles();

@@ -262,10 +262,20 @@ int RunModule(int argc, char* argv[], const char* xmlDescription, const std::fun
 
   ParsedCommandLine parsed;
   Arguments arguments;
+  // Outputs are published together once everything succeeded; any failure discards them.
+  struct DiscardUnlessPublished
+  {
+    bool published = false;
+    ~DiscardUnlessPublished()
+    {
+      if (!published) detail::DiscardOutputs();
+    }
+  } transaction;
   try
   {
     parsed = Parse(argc, argv, description, module);
     arguments = Arguments(description, parsed.values);
+    detail::BeginOutputTransaction(description, parsed.values, parsed.returnParameterFile);
   }
   catch (const TCLAP::ExitException& e) // --help, --version
   {
@@ -288,6 +298,8 @@ int RunModule(int argc, char* argv[], const char* xmlDescription, const std::fun
     context.progress.End();
     if (!parsed.returnParameterFile.empty())
       WriteReturnParameters(parsed.returnParameterFile, description, context.outputs);
+    transaction.published = true;
+    detail::PublishOutputs();
   }
   catch (const Aborted& a) // outputs not committed were removed while unwinding
   {

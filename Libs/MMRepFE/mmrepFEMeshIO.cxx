@@ -6,6 +6,7 @@
 
 #include "mmrepCoordinateSpace.h"
 #include "mmrepFEExport.h"
+#include "mmrepResourceBudget.h"
 
 #include <vtkLogger.h>
 #include <vtkNew.h>
@@ -116,8 +117,17 @@ vtkSmartPointer<vtkUnstructuredGrid> ReadXML(const std::string& path)
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   if (!reader->CanReadFile(path.c_str()))
     throw std::runtime_error(path + ": not a VTK XML unstructured grid (.vtu) file");
+  // Per point: VTK's coordinates and our copy; per cell: connectivity, offsets, types, our element.
+  CheckVTKXMLCounts(path, 64, 256);
   reader->SetFileName(path.c_str());
-  reader->Update();
+  try
+  {
+    reader->Update();
+  }
+  catch (const std::bad_alloc&)
+  {
+    throw std::runtime_error(path + ": not enough memory to read the mesh it declares");
+  }
   if (errors.Any() || reader->GetErrorCode() != 0)
     throw std::runtime_error(path + ": cannot read: " + (errors.Any() ? errors.First() : "read error"));
   vtkSmartPointer<vtkUnstructuredGrid> grid = reader->GetOutput();

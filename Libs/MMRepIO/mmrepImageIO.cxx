@@ -16,7 +16,14 @@
 #include <itkPixelTraits.h>
 #include <itksys/SystemTools.hxx>
 
+#include "mmrepResourceBudget.h"
+
+#include <gdcmTrace.h>
+
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <type_traits>
 #include <cstdio>
 #include <cstring>
 #include <mutex>
@@ -108,11 +115,63 @@ itk::ImageIOBase::Pointer ProbeFile(const std::string& path, unsigned int compon
   return io;
 }
 
-template <typename TImage>
-typename TImage::Pointer ReadFile(const std::string& path)
+// Refuses, from the header, a volume that would not fit the memory budget (read buffer in the
+// file's type plus the image in ours).
+void CheckVoxelBudget(const std::string& path, const itk::ImageIOBase* io, std::size_t bytesPerVoxel)
 {
-  EnsureImageIOFactories();
-  itk::ImageIOBase::Pointer io = ProbeFile(path, itk::PixelTraits<typename TImage::PixelType>::Dimension);
+  std::vector<double> counts;
+  for (unsigned a = 0; a < io->GetNumberOfDimensions(); ++a)
+    counts.push_back(static_cast<double>(io->GetDimensions(a)));
+  const double fileBytes = static_cast<double>(io->GetComponentSize() * io->GetNumberOfComponents());
+  try
+  {
+    CheckMemoryNeed("the header declares", counts, fileBytes + static_cast<double>(bytesPerVoxel));
+  }
+  catch (const std::exception& e)
+  {
+    Fail(path, e.what());
+  }
+}
+
+bool FloatingPointFile(const itk::ImageIOBase* io)
+{
+  return io->GetComponentType() == itk::IOComponentEnum::FLOAT ||
+         io->GetComponentType() == itk::IOComponentEnum::DOUBLE;
+}
+
+// A NaN or an infinity in a volume would silently cut surfaces and distance maps: refused, with
+// the first such voxel, before any work. `lowest`/`highest`: the range of the type we keep.
+template <typename TImage>
+void RequireFiniteVoxels(const std::string& path, const TImage* image, double lowest, double highest)
+{
+  const auto* buffer = image->GetBufferPointer();
+  const std::size_t n = image->GetBufferedRegion().GetNumberOfPixels();
+  constexpr unsigned components = itk::PixelTraits<typename TImage::PixelType>::Dimension;
+  for (std::size_t i = 0; i < n; ++i)
+    for (unsigned c = 0; c < components; ++c)
+    {
+      double v;
+      if constexpr (components == 1)
+        v = static_cast<double>(buffer[i]);
+      else
+        v = static_cast<double>(buffer[i][c]);
+      if (std::isfinite(v) && v >= lowest && v <= highest)
+        continue;
+      const auto index = image->ComputeIndex(static_cast<typename TImage::OffsetValueType>(i));
+      char where[128];
+      std::snprintf(where, sizeof where, "voxel (%ld, %ld, %ld) is %s", static_cast<long>(index[0]),
+                    static_cast<long>(index[1]), static_cast<long>(index[2]),
+                    std::isnan(v) ? "NaN" : std::isinf(v) ? (v > 0 ? "+Inf" : "-Inf") : "out of range");
+      Fail(path, std::string(where) + "; the volume must hold finite values" +
+                   (std::isfinite(v) ? " within [" + std::to_string(static_cast<long long>(lowest)) + ", " +
+                                         std::to_string(static_cast<long long>(highest)) + "]"
+                                     : std::string()));
+    }
+}
+
+template <typename TImage>
+typename TImage::Pointer ReadWithIO(const std::string& path, itk::ImageIOBase* io)
+{
   auto reader = itk::ImageFileReader<TImage>::New();
   reader->SetFileName(path);
   reader->SetImageIO(io);
@@ -124,6 +183,10 @@ typename TImage::Pointer ReadFile(const std::string& path)
   {
     Fail(path, "cannot read voxel data (truncated or corrupt file?): " + FirstLine(e.GetDescription()));
   }
+  catch (const std::bad_alloc&)
+  {
+    Fail(path, "not enough memory to read the voxel data");
+  }
   catch (const std::exception& e)
   {
     Fail(path, std::string("cannot read voxel data: ") + e.what());
@@ -133,9 +196,50 @@ typename TImage::Pointer ReadFile(const std::string& path)
   return image;
 }
 
+template <typename TImage>
+typename TImage::Pointer ReadFile(const std::string& path)
+{
+  using Pixel = typename TImage::PixelType;
+  using Value = typename itk::PixelTraits<Pixel>::ValueType;
+  EnsureImageIOFactories();
+  itk::ImageIOBase::Pointer io = ProbeFile(path, itk::PixelTraits<Pixel>::Dimension);
+  const bool floating = FloatingPointFile(io);
+  CheckVoxelBudget(path, io, sizeof(Pixel) + (floating && std::is_integral_v<Value> ? sizeof(double) : 0));
+  if constexpr (std::is_integral_v<Value>)
+  {
+    if (floating) // check the values before they are cast to our integer type
+    {
+      using DoubleImage = itk::Image<double, TImage::ImageDimension>;
+      const auto values = ReadWithIO<DoubleImage>(path, io);
+      RequireFiniteVoxels(path, values.GetPointer(), static_cast<double>(std::numeric_limits<Value>::lowest()),
+                          static_cast<double>(std::numeric_limits<Value>::max()));
+      auto image = TImage::New();
+      image->CopyInformation(values);
+      image->SetRegions(values->GetLargestPossibleRegion());
+      image->Allocate();
+      std::transform(values->GetBufferPointer(),
+                     values->GetBufferPointer() + values->GetBufferedRegion().GetNumberOfPixels(),
+                     image->GetBufferPointer(), [](double v) { return static_cast<Value>(std::lround(v)); });
+      return image;
+    }
+    return ReadWithIO<TImage>(path, io);
+  }
+  else
+  {
+    auto image = ReadWithIO<TImage>(path, io);
+    RequireFiniteVoxels(path, image.GetPointer(), -std::numeric_limits<double>::max(),
+                        std::numeric_limits<double>::max());
+    return image;
+  }
+}
+
 CTImage::Pointer ReadDicomDirectory(const std::string& directory)
 {
   EnsureImageIOFactories();
+  // GDCM prints its own multi-line dumps for junk files on std::cerr; our line says it instead.
+  gdcm::Trace::SetError(false);
+  gdcm::Trace::SetWarning(false);
+  gdcm::Trace::SetDebug(false);
   auto names = itk::GDCMSeriesFileNames::New();
   names->SetUseSeriesDetails(true);
   std::vector<std::string> seriesUIDs;
@@ -159,6 +263,30 @@ CTImage::Pointer ReadDicomDirectory(const std::string& directory)
     Fail(directory, "DICOM series " + seriesUIDs.front() + " has no readable files");
   }
 
+  // The series' size from its first slice's header, before the reader allocates it.
+  {
+    auto probe = itk::GDCMImageIO::New();
+    probe->SetFileName(files.front());
+    try
+    {
+      probe->ReadImageInformation();
+    }
+    catch (const itk::ExceptionObject& e)
+    {
+      Fail(files.front(), "cannot read DICOM header: " + FirstLine(e.GetDescription()));
+    }
+    try
+    {
+      CheckMemoryNeed("the series declares",
+                      {static_cast<double>(probe->GetDimensions(0)), static_cast<double>(probe->GetDimensions(1)),
+                       static_cast<double>(files.size())},
+                      static_cast<double>(2 * sizeof(short)));
+    }
+    catch (const std::exception& e)
+    {
+      Fail(directory, e.what());
+    }
+  }
   auto reader = itk::ImageSeriesReader<CTImage>::New();
   reader->SetImageIO(itk::GDCMImageIO::New());
   reader->SetFileNames(files);

@@ -3,6 +3,7 @@
 
 #include "mmrepCoordinateSpace.h"
 #include "mmrepIOPath.h"
+#include "mmrepResourceBudget.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
@@ -128,7 +129,17 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path)
     Fail(path, "unknown surface file extension (supported: .vtp, .vtk, .stl, .ply, .obj)");
   }
   Watch(reader, errors);
-  reader->Update();
+  try
+  {
+    if (format == "vtp")
+      CheckVTKXMLCounts(path, 64, 64); // coordinates, normals and our copy; a triangle's ids
+    reader->Update();
+  }
+  catch (const std::bad_alloc&)
+  {
+    Fail(path, "not enough memory to read the surface it declares");
+  }
+
   if (!errors->message.empty() || reader->GetErrorCode() != vtkErrorCode::NoError)
   {
     const std::string why = !errors->message.empty()

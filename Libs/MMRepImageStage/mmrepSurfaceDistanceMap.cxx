@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -144,13 +145,20 @@ FloatImage::Pointer ComputeSurfaceDistanceMap(vtkPolyData* surface, const Surfac
   {
     origin[a] = box[2 * a] - o.margin;
     const double extent = box[2 * a + 1] + o.margin - origin[a];
-    size[a] = static_cast<itk::SizeValueType>(std::ceil(extent / o.spacing)) + 1;
+    const double count = std::ceil(extent / o.spacing) + 1; // in floating point: cannot wrap around
+    voxels *= count;
+    size[a] = voxels <= 512.0 * 512.0 * 512.0 ? static_cast<itk::SizeValueType>(count) : 0;
     spacing[a] = o.spacing;
-    voxels *= size[a];
   }
-  if (voxels > 512.0 * 512.0 * 512.0)
-    throw std::runtime_error("distance map: the grid would have " + std::to_string(static_cast<long long>(voxels)) +
-                             " voxels; use a coarser spacing or a smaller margin");
+  if (!(voxels <= 512.0 * 512.0 * 512.0))
+  {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "distance map: the grid would have %.3g voxels at spacing %g mm (at most 512^3); use a coarser "
+                  "spacing or a smaller margin",
+                  voxels, o.spacing);
+    throw std::runtime_error(text);
+  }
 
   auto map = FloatImage::New();
   FloatImage::RegionType region;

@@ -40,22 +40,56 @@ PointMap DisplacementFieldMap(const DisplacementField* field)
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <thread>
+
+#include "mmrepResourceBudget.h"
 
 namespace mmrep
 {
+
+namespace
+{
+// Voxels per axis, in floating point so that a tiny spacing cannot wrap the count around.
+std::vector<double> GridCounts(const Point3& lo, const Point3& hi, double margin, double spacing)
+{
+  std::vector<double> counts;
+  for (unsigned a = 0; a < 3; ++a)
+    counts.push_back(std::ceil((hi[a] - lo[a] + 2 * margin) / spacing) + 1);
+  return counts;
+}
+
+void Bounds(const std::vector<Point3>& points, Point3& lo, Point3& hi)
+{
+  lo = points.front();
+  hi = points.front();
+  for (const auto& p : points)
+  {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+}
+} // namespace
+
+void CheckDisplacementFieldSize(const std::vector<Point3>& points, double margin, double spacing,
+                                const std::string& parameter)
+{
+  if (points.empty()) return;
+  Point3 lo, hi;
+  Bounds(points, lo, hi);
+  char what[128];
+  std::snprintf(what, sizeof what, "%s %g: the displacement field would be", parameter.c_str(), spacing);
+  CheckMemoryNeed(what, GridCounts(lo, hi, margin, spacing), sizeof(DisplacementField::PixelType));
+}
 
 DisplacementField::Pointer SampleDisplacementField(const PointMap& map, const std::vector<Point3>& points,
                                                    double margin, double spacing)
 {
   if (points.empty() || !(spacing > 0) || !(margin >= 0))
     throw std::invalid_argument("displacement field: no points, or spacing <= 0 / margin < 0");
-  Point3 lo = points.front(), hi = points.front();
-  for (const auto& p : points)
-  {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
+  Point3 lo, hi;
+  Bounds(points, lo, hi);
+  CheckMemoryNeed("displacement field", GridCounts(lo, hi, margin, spacing), sizeof(DisplacementField::PixelType));
   auto field = DisplacementField::New();
   DisplacementField::RegionType region;
   DisplacementField::PointType origin;

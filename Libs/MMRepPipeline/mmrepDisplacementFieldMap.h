@@ -23,5 +23,9 @@ namespace mmrep
 // thread count.
 DisplacementField::Pointer SampleDisplacementField(const PointMap& map, const std::vector<Point3>& points,
                                                    double margin, double spacing);
+// Refuses, before any work, the grid SampleDisplacementField would make when it does not fit the
+// memory budget: throws std::runtime_error "<parameter> <spacing>: the displacement field would be …".
+void CheckDisplacementFieldSize(const std::vector<Point3>& points, double margin, double spacing,
+                                const std::string& parameter);
 
 } // namespace mmrep

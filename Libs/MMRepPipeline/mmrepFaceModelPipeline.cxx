@@ -1,4 +1,5 @@
 #include "mmrepFaceModelPipeline.h"
+#include "mmrepFieldOfView.h"
 
 #include "mmrepCanonicalVoxelOrder.h"
 #include "mmrepHeadSegmentation.h"
@@ -218,6 +219,7 @@ FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& c
   };
 
   result.controlTargets = MatchControlPoints(ct, controlPoints, atlas, result.controlNames);
+  CheckFieldOfView(ct, atlas, options.registration.skinSet, result.controlTargets, options.fieldOfViewMargin);
 
   // 1. Surfaces.
   auto t = Clock::now();

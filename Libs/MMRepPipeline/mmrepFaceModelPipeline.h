@@ -38,6 +38,7 @@ struct FaceModelOptions
   LocalRefinementOptions refinement;     // Q (plane, symmetry and progress set by the pipeline)
   double repairThreshold = 0.3;          // scaled Jacobian every element must reach
   int repairSweeps = 40; // a model that needs more is better re-registered than ground on
+  double fieldOfViewMargin = 5; // mm the CT must extend past the face region (mmrepFieldOfView.h)
   // (stage name, fraction of the whole pipeline done)
   std::function<void(const std::string&, double)> progress;
 };

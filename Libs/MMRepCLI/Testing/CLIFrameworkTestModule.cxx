@@ -77,6 +77,8 @@ void Body(ModuleContext& ctx)
   if (failure == "afterWrite")
     throw mmrep::cli::ModuleError("requested failure after writing '" + out.TempPath() + "'");
   out.Commit();
+  if (failure == "afterCommit") // the framework publishes outputs only once the whole run succeeded
+    throw mmrep::cli::ModuleError("requested failure after committing the output");
 
   double checksum = a.Double("scale");
   for (double s : a.Doubles("spacing"))

@@ -109,7 +109,7 @@ TEST(CLIDescription, FlagsIndicesConstraintsEnumerations)
 
   EXPECT_EQ(d.Find("order")->elements, (std::vector<std::string>{"1", "2", "3"}));
   EXPECT_EQ(d.Find("mode")->elements, (std::vector<std::string>{"fast", "accurate"}));
-  EXPECT_EQ(d.Find("failure")->elements.size(), 5u);
+  EXPECT_EQ(d.Find("failure")->elements.size(), 6u);
 
   EXPECT_TRUE(d.Find("seedsRAS")->multiple);
   EXPECT_EQ(d.Find("seedsRAS")->coordinateSystem, "ras");

@@ -8,6 +8,8 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <regex>
 #include <set>
@@ -289,9 +291,40 @@ TEST(CLIModule, MissingOutputFolderIsNamed)
 {
   const fs::path dir = TestFolder();
   const Result r = RunModule(dir, "in nowhere/report.txt" + kOthers);
-  EXPECT_EQ(r.code, 1);
-  EXPECT_EQ(r.err, kPrefix + "cannot write 'nowhere/report.txt': folder 'nowhere' does not exist\n");
+  EXPECT_EQ(r.code, 2); // refused from the command line, before the body runs
+  EXPECT_EQ(r.err, kPrefix + "'outputFile' (argument 2): cannot write 'nowhere/report.txt': folder '" +
+                       (fs::weakly_canonical(dir) / "nowhere").string() + "' does not exist\n");
   EXPECT_FALSE(fs::exists(dir / "nowhere"));
+}
+
+TEST(CLIModule, FailureAfterCommitPublishesNothing)
+{
+  const fs::path dir = TestFolder();
+  fs::create_directory(dir / "out");
+  std::ofstream(dir / "out" / "report.vtu") << "earlier result";
+  const Result r =
+      RunModule(dir, "in out/report.vtu" + kOthers + " --failure afterCommit --returnparameterfile out/rp.txt");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, kPrefix + "requested failure after committing the output\n");
+  // The earlier result is as it was, no return parameters, no temporary left.
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir / "out"))
+    names.push_back(e.path().filename().string());
+  EXPECT_EQ(names, std::vector<std::string>{"report.vtu"});
+  std::ifstream f(dir / "out" / "report.vtu");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(f), {}), "earlier result");
+}
+
+TEST(CLIModule, ReturnParameterFailurePublishesNothing)
+{
+  // The return-parameter file cannot be written (its name is a folder): the output is not published either.
+  const fs::path dir = TestFolder();
+  fs::create_directories(dir / "out" / "rp.txt");
+  const Result r = RunModule(dir, "in out/report.vtu" + kOthers + " --returnparameterfile out/rp.txt");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(Lines(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("rp.txt"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out" / "report.vtu"));
 }
 
 namespace

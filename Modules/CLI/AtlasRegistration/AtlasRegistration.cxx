@@ -5,6 +5,7 @@
 #include "mmrepImageIO.h"
 #include "mmrepFEMeshIO.h"
 #include "mmrepLandmarkIO.h"
+#include "mmrepResourceBudget.h"
 #include "mmrepSurfaceIO.h"
 #include "mmrepSymmetryPlane.h"
 
@@ -69,6 +70,21 @@ void Run(mmrep::cli::ModuleContext& ctx)
   ctx.progress.Start("Atlas registration");
   // Library errors (bad files, sets, names) become one-line module errors.
   const auto atlas = mmrep::ReadFEMesh(args.String("atlasMesh"));
+  // The transform's grid covers the atlas (where the field is defined) with a 10 mm margin; one
+  // too large for memory is refused before the registration.
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
+  for (const auto& n : atlas.nodes)
+  {
+    lo = lo.cwiseMin(n);
+    hi = hi.cwiseMax(n);
+  }
+  const double spacing = args.Double("transformSpacing");
+  std::vector<double> gridCounts;
+  for (unsigned a = 0; a < 3; ++a)
+    gridCounts.push_back(std::ceil((hi[a] - lo[a] + 20.0) / spacing) + 1);
+  if (fieldOut)
+    mmrep::CheckMemoryNeed("--transformSpacing " + args.String("transformSpacing") + ": the transform would be",
+                           gridCounts, 3 * sizeof(float));
   mmrep::SubjectData subject;
   subject.skin = mmrep::ReadSurface(args.String("subjectSkin"));
   subject.skull = mmrep::ReadSurface(args.String("subjectSkull"));
@@ -102,21 +118,13 @@ void Run(mmrep::cli::ModuleContext& ctx)
                      mmrep::cli::FileExtension(outputs[0]->FinalPath()).substr(1));
   if (fieldOut)
   {
-    // Grid over the atlas (where the field is defined: atlas points), 10 mm margin.
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
-    for (const auto& n : atlas.nodes)
-    {
-      lo = lo.cwiseMin(n);
-      hi = hi.cwiseMax(n);
-    }
-    const double spacing = args.Double("transformSpacing");
     auto grid = itk::Image<float, 3>::New();
     itk::Image<float, 3>::RegionType region;
     itk::Image<float, 3>::PointType origin;
     for (unsigned a = 0; a < 3; ++a)
     {
       origin[a] = lo[a] - 10.0;
-      region.SetSize(a, static_cast<itk::SizeValueType>(std::ceil((hi[a] - lo[a] + 20.0) / spacing)) + 1);
+      region.SetSize(a, static_cast<itk::SizeValueType>(gridCounts[a]));
     }
     grid->SetRegions(region);
     grid->SetOrigin(origin);

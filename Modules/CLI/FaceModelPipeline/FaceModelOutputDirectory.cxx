@@ -13,6 +13,7 @@ FaceModelOutputDirectory::FaceModelOutputDirectory(const std::string& path)
   final_ = fs::path(path).lexically_normal();
   if (final_.filename().empty())
     final_ = final_.parent_path(); // "out/" -> "out"
+  mmrep::cli::CheckOutputPath(final_.string(), true); // never over or around an input
   std::error_code ec;
   if (fs::exists(final_, ec) && !fs::is_directory(final_, ec))
     throw ModuleError(final_.string() + ": exists and is not a directory");
@@ -40,6 +41,23 @@ FaceModelOutputDirectory::~FaceModelOutputDirectory()
 
 void FaceModelOutputDirectory::Commit()
 {
+  // Inside a module run the folder appears only once every step succeeded (return parameters too).
+  const fs::path final = final_, staging = staging_;
+  committed_ = mmrep::cli::DeferPublication(
+      final_.string(), [final, staging] { Publish(final, staging); },
+      [staging] {
+        std::error_code ec;
+        fs::remove_all(staging, ec);
+      });
+  if (!committed_)
+  {
+    Publish(final_, staging_);
+    committed_ = true;
+  }
+}
+
+void FaceModelOutputDirectory::Publish(const fs::path& final_, const fs::path& staging_)
+{
   std::error_code ec;
   fs::path old;
   if (fs::exists(final_, ec))
@@ -56,7 +74,6 @@ void FaceModelOutputDirectory::Commit()
       fs::rename(old, final_, ec);
     throw ModuleError(final_.string() + ": cannot move the results into place");
   }
-  committed_ = true;
   if (!old.empty())
     fs::remove_all(old, ec);
 }

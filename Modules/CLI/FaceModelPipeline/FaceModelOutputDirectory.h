@@ -18,6 +18,7 @@ public:
   void Commit(); // throws ModuleError if the rename fails
 
 private:
+  static void Publish(const std::filesystem::path& final, const std::filesystem::path& staging);
   std::filesystem::path final_, staging_;
   bool committed_ = false;
 };

@@ -57,6 +57,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
   const auto atlas = mmrep::ReadFEMesh(atlasPath);
   const auto controlPoints = mmrep::ReadLandmarks(args.String("controlPoints"));
   const auto ct = mmrep::ReadCTImage(args.String("inputVolume"));
+  mmrep::CheckDisplacementFieldSize(atlas.nodes, 10.0, args.Double("transformSpacing"), "--transformSpacing");
   ctx.progress.Report(0.05);
 
   mmrep::FaceModelOptions options;
@@ -143,16 +144,16 @@ void Run(mmrep::cli::ModuleContext& ctx)
   out.Commit();
   if (!result.repair.success)
   {
-    // The directory holds everything for inspection (report.md says what failed), but the run
-    // failed: the model does not meet the quality threshold.
+    // The model does not meet the quality threshold: the run fails and publishes nothing (an
+    // earlier result in the output directory stays as it was).
     std::string worst;
     for (std::size_t i = 0; i < result.repair.failedElements.size() && i < 5; ++i)
       worst += (i ? ", " : "") + std::to_string(result.repair.failedElements[i]) + " (" +
                std::to_string(result.repair.failedValues[i]) + ")";
     throw ModuleError("repair could not bring every element to scaled Jacobian " + std::to_string(qualityThreshold) +
                       ": " + std::to_string(result.repair.failedElements.size()) + " elements remain below (worst: " +
-                      worst + "); the unrepaired model and report.md are in " + out.FinalPath().string() +
-                      " for inspection");
+                      worst + "); nothing written to " + out.FinalPath().string() +
+                      " (lower --qualityThreshold or check the control points)");
   }
 
   const auto& a = result.accuracy.back();

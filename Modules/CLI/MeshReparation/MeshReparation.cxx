@@ -180,7 +180,7 @@ MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
       file.close();
       if (!file)
         throw cli::ModuleError("cannot write report '" + reportPath + "'");
-      out.Commit();
+      out.CommitEvenIfRunFails(); // the report says why a repair failed
     }
     if (!histogramPath.empty())
     {
@@ -194,7 +194,7 @@ MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
       {
         throw cli::ModuleError(std::string("histogram: ") + e.what());
       }
-      out.Commit();
+      out.CommitEvenIfRunFails();
     }
     ctx.progress.Report(0.9);
 

@@ -1,0 +1,76 @@
+#include "mmrepFieldOfView.h"
+
+#include "mmrepSimilarityTransform.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace mmrep
+{
+
+void CheckFieldOfView(const CTImage* ct, const FEMesh& atlas, const std::string& faceSet,
+                      const std::vector<Point3>& targets, double margin)
+{
+  std::vector<Eigen::Vector3d> source, target;
+  for (std::size_t i = 0; i < atlas.landmarks.size() && i < targets.size(); ++i)
+  {
+    source.push_back(atlas.landmarks[i].position);
+    target.push_back(targets[i]);
+  }
+  const SimilarityTransform toCT = EstimateSimilarity(source, target);
+  const auto set = atlas.nodeSets.find(faceSet);
+  if (set == atlas.nodeSets.end())
+    throw std::invalid_argument("atlas: node set '" + faceSet + "' is missing");
+
+  // How far (mm) the face goes past each end of each CT axis, margin included.
+  const auto region = ct->GetLargestPossibleRegion();
+  double beyond[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+  for (const std::size_t node : set->second)
+  {
+    const Eigen::Vector3d x = toCT.Apply(atlas.nodes[node]);
+    CTImage::PointType p;
+    for (unsigned a = 0; a < 3; ++a)
+      p[a] = x[a];
+    const auto index = ct->TransformPhysicalPointToContinuousIndex<double>(p);
+    for (unsigned a = 0; a < 3; ++a)
+    {
+      const double h = ct->GetSpacing()[a];
+      const double first = static_cast<double>(region.GetIndex(a)) - 0.5;
+      const double last = first + static_cast<double>(region.GetSize(a));
+      beyond[a][0] = std::max(beyond[a][0], (first - index[a]) * h + margin);
+      beyond[a][1] = std::max(beyond[a][1], (index[a] - last) * h + margin);
+    }
+  }
+
+  // Name each short side by the anatomical direction its CT axis points to in LPS.
+  static const char* const names[3][2] = {{"right cheek", "left cheek"},
+                                          {"front of the face", "back of the face"},
+                                          {"chin", "brow"}};
+  std::string missing;
+  for (unsigned a = 0; a < 3; ++a)
+  {
+    unsigned lps = 0;
+    for (unsigned k = 1; k < 3; ++k)
+      if (std::abs(ct->GetDirection()[k][a]) > std::abs(ct->GetDirection()[lps][a])) lps = k;
+    const bool flipped = ct->GetDirection()[lps][a] < 0;
+    for (unsigned end = 0; end < 2; ++end)
+      if (beyond[a][end] > 0)
+      {
+        char text[160];
+        std::snprintf(text, sizeof text, "%s%s by %.0f mm", missing.empty() ? "" : ", ",
+                      names[lps][flipped ? 1 - end : end], std::ceil(beyond[a][end]));
+        missing += text;
+      }
+  }
+  if (!missing.empty())
+  {
+    char text[120];
+    std::snprintf(text, sizeof text, " (the face region, placed by the control points, needs a %.0f mm margin)",
+                  margin);
+    throw std::runtime_error("the CT does not cover the face: it misses the " + missing + text);
+  }
+}
+
+} // namespace mmrep

@@ -1,0 +1,21 @@
+// Field of view: does the CT cover the face the model is built for? A CT of the cranium only
+// (no mouth, no chin) would otherwise give a "speaker model" whose lower face is the atlas's.
+#pragma once
+
+#include "mmrepFEMesh.h"
+#include "mmrepImageIO.h"
+
+#include <string>
+#include <vector>
+
+namespace mmrep
+{
+
+// Maps the atlas's face region (the nodes of `faceSet`: brow to chin, both cheeks) into the CT by
+// the similarity taking the atlas landmarks to `targets` (the control points, in the atlas
+// landmarks' order) and throws std::runtime_error unless the CT's extent holds all of them with
+// `margin` mm to spare, naming each side that is missing and by how many mm.
+void CheckFieldOfView(const CTImage* ct, const FEMesh& atlas, const std::string& faceSet,
+                      const std::vector<Point3>& targets, double margin);
+
+} // namespace mmrep

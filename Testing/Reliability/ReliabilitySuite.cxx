@@ -1,0 +1,233 @@
+// The bad-input suite: each case of BadInputCases.h runs a module as a user would and checks what
+// the user is left with: the exit code, exactly one stderr line naming the culprit, and the case's
+// folder (inputs, earlier outputs, $TMPDIR) byte for byte as it was, with nothing added.
+#include "BadInputCases.h"
+#include "mmrepImageIO.h"
+#include "mmrepModuleRunner.h"
+
+#include <itkRegionOfInterestImageFilter.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <regex>
+
+namespace
+{
+namespace fs = std::filesystem;
+using namespace mmrep::testing;
+
+const std::string kSampleData = std::string(MMREP_SOURCE_DIR) + "/Resources/SampleData/";
+const std::string kAtlasData = std::string(MMREP_SOURCE_DIR) + "/Resources/Atlas/";
+
+void WriteFile(const fs::path& path, const std::string& bytes)
+{
+  std::ofstream f(path, std::ios::binary);
+  f << bytes;
+  ASSERT_TRUE(f.good()) << path;
+}
+
+// The generated fixtures, made once per test program.
+const fs::path& Fixtures()
+{
+  static const fs::path dir = [] {
+    const fs::path d = fs::temp_directory_path() / ("mmrep-reliability-fixtures-" + std::to_string(::getpid()));
+    fs::remove_all(d);
+    fs::create_directories(d / "dicomjunk");
+    const std::string lps = "space: left-posterior-superior\nspace directions: (4,0,0) (0,4,0) (0,0,4)\n"
+                            "space origin: (0,0,0)\nendian: little\nencoding: raw\n\n";
+    // 2048^3 shorts declared, 4 kB present.
+    WriteFile(d / "big.nrrd", "NRRD0004\ntype: short\ndimension: 3\nsizes: 2048 2048 2048\n" + lps +
+                                  std::string(4000, '\0'));
+    // A float volume of air with one NaN voxel.
+    std::vector<float> voxels(16 * 16 * 16, -1000.0f);
+    voxels[5 + 16 * (6 + 16 * 7)] = std::numeric_limits<float>::quiet_NaN();
+    std::string raw(voxels.size() * sizeof(float), '\0');
+    std::memcpy(raw.data(), voxels.data(), raw.size());
+    WriteFile(d / "nan.nrrd", "NRRD0004\ntype: float\ndimension: 3\nsizes: 16 16 16\n" + lps + raw);
+    WriteFile(d / "field.nrrd", "NRRD0004\ntype: float\ndimension: 4\nsizes: 3 2 2 2\n"
+                                "kinds: vector domain domain domain\nspace: left-posterior-superior\n"
+                                "space directions: none (1,0,0) (0,1,0) (0,0,1)\nspace origin: (0,0,0)\n"
+                                "encoding: ascii\n\n" + std::string(24, '0').replace(0, 24, [] {
+                                  std::string zeros;
+                                  for (int i = 0; i < 24; ++i)
+                                    zeros += "0\n";
+                                  return zeros;
+                                }()));
+    const std::string points = R"(<Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 1 0</DataArray></Points>)";
+    WriteFile(d / "bigvtu.vtu",
+              R"(<?xml version="1.0"?>
+<VTKFile type="UnstructuredGrid" version="0.1" byte_order="LittleEndian">
+  <UnstructuredGrid>
+    <Piece NumberOfPoints="100000000000" NumberOfCells="1">
+      )" + points + R"(
+      <Cells>
+        <DataArray type="Int64" Name="connectivity" format="ascii">0 1 2</DataArray>
+        <DataArray type="Int64" Name="offsets" format="ascii">3</DataArray>
+        <DataArray type="UInt8" Name="types" format="ascii">5</DataArray>
+      </Cells>
+    </Piece>
+  </UnstructuredGrid>
+</VTKFile>
+)");
+    WriteFile(d / "bigvtp.vtp",
+              R"(<?xml version="1.0"?>
+<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">
+  <PolyData>
+    <Piece NumberOfPoints="100000000000" NumberOfPolys="1">
+      )" + points + R"(
+      <Polys>
+        <DataArray type="Int64" Name="connectivity" format="ascii">0 1 2</DataArray>
+        <DataArray type="Int64" Name="offsets" format="ascii">3</DataArray>
+      </Polys>
+    </Piece>
+  </PolyData>
+</VTKFile>
+)");
+    WriteFile(d / "dicomjunk" / "IM0001.dcm", std::string(128, '\0') + "DICM" + std::string(300, '\x7f'));
+    WriteFile(d / "dicomjunk" / "notes.txt", "not an image\n");
+    // The bundled CT cut 5 mm below the lower lip: the control points stay inside, the chin is gone.
+    const auto ct = mmrep::ReadCTImage(kSampleData + "cthead.nrrd");
+    auto region = ct->GetLargestPossibleRegion();
+    mmrep::CTImage::PointType lip;
+    lip[0] = 111.1;
+    lip[1] = 25.2;
+    lip[2] = 59.2 - 5.0; // LowerLipCenter (cthead.ControlPoints.mrk.json), z superior
+    const auto cut = ct->TransformPhysicalPointToIndex(lip);
+    const auto keep = region.GetIndex(2) + region.GetSize(2) - cut[2];
+    region.SetIndex(2, cut[2]);
+    region.SetSize(2, static_cast<itk::SizeValueType>(keep));
+    auto crop = itk::RegionOfInterestImageFilter<mmrep::CTImage, mmrep::CTImage>::New();
+    crop->SetInput(ct);
+    crop->SetRegionOfInterest(region);
+    crop->Update();
+    mmrep::WriteImage(crop->GetOutput(), (d / "cropped.nrrd").string());
+    return d;
+  }();
+  struct RemoveAtExit
+  {
+    fs::path path;
+    ~RemoveAtExit()
+    {
+      std::error_code ec;
+      fs::remove_all(path, ec);
+    }
+  };
+  static const RemoveAtExit cleanup{dir};
+  return dir;
+}
+
+const std::map<std::string, fs::path>& Placeholders()
+{
+  static const std::map<std::string, fs::path> p = {
+    {"{ct}", kSampleData + "cthead.nrrd"},
+    {"{points}", kSampleData + "cthead.ControlPoints.mrk.json"},
+    {"{atlas}", kAtlasData + "FaceAtlas.vtu"},
+    {"{landmarks}", kAtlasData + "FaceAtlasLandmarks.mrk.json"},
+    {"{skin}", kAtlasData + "FaceAtlasSkin.vtp"},
+    {"{skull}", kAtlasData + "FaceAtlasSkull.vtp"},
+    {"{field}", Fixtures() / "field.nrrd"},
+    {"{nan}", Fixtures() / "nan.nrrd"},
+    {"{big}", Fixtures() / "big.nrrd"},
+    {"{bigvtu}", Fixtures() / "bigvtu.vtu"},
+    {"{bigvtp}", Fixtures() / "bigvtp.vtp"},
+    {"{dicomjunk}", Fixtures() / "dicomjunk"},
+    {"{cropped}", Fixtures() / "cropped.nrrd"},
+  };
+  return p;
+}
+
+// Every file and folder under `root`, with the bytes of the files.
+std::map<std::string, std::string> Snapshot(const fs::path& root)
+{
+  std::map<std::string, std::string> entries;
+  for (const auto& e : fs::recursive_directory_iterator(root))
+    entries[fs::relative(e.path(), root).string()] = e.is_directory() ? std::string("<folder>") : Slurp(e.path());
+  return entries;
+}
+
+std::string Differences(const std::map<std::string, std::string>& before, const std::map<std::string, std::string>& after)
+{
+  std::string d;
+  for (const auto& [name, bytes] : before)
+    if (!after.count(name))
+      d += " removed " + name + ";";
+    else if (after.at(name) != bytes)
+      d += " changed " + name + ";";
+  for (const auto& [name, bytes] : after)
+    if (!before.count(name))
+      d += " added " + name + ";";
+  return d;
+}
+
+class BadInput : public ::testing::TestWithParam<BadInputCase>
+{
+};
+
+TEST_P(BadInput, OneLineNothingTouchedNothingLeft)
+{
+  const BadInputCase& c = GetParam();
+  ScratchDirectory scratch("bad-" + c.name);
+  const fs::path dir = scratch.path() / "case", logs = scratch.path() / "logs";
+  fs::create_directories(dir / "tmp");
+  fs::create_directories(logs);
+
+  // Inputs: the fixtures the case names, copied in; then the earlier outputs.
+  std::vector<std::string> args;
+  for (std::string a : c.args)
+  {
+    for (const auto& [key, source] : Placeholders())
+      for (std::size_t at; (at = a.find(key)) != std::string::npos;)
+      {
+        const fs::path copy = dir / source.filename();
+        if (!fs::exists(copy))
+          fs::copy(source, copy, fs::copy_options::recursive);
+        a.replace(at, key.size(), copy.string());
+      }
+    for (std::size_t at; (at = a.find("{d}")) != std::string::npos;)
+      a.replace(at, 3, dir.string());
+    args.push_back(a);
+  }
+  for (const std::string& e : c.earlier)
+    if (e.back() == '/')
+    {
+      fs::create_directories(dir / e);
+      std::ofstream(dir / e / "model.vtu") << "an earlier run's model\n";
+    }
+    else
+      std::ofstream(dir / e) << "an earlier run's " << e << "\n";
+  const auto before = Snapshot(dir);
+
+  std::string cmd = "cd " + Quote(dir.string()) + " && TMPDIR=" + Quote((dir / "tmp").string()) + " ";
+  const char* display = std::getenv("DISPLAY");
+  if (c.display && (display == nullptr || *display == '\0'))
+    cmd += "xvfb-run -a -f " + Quote((logs / "Xauthority").string()) + " -s \"-screen 0 1600x1200x24\" ";
+  if (c.addressSpaceKiB > 0)
+    cmd += "sh -c 'ulimit -v " + std::to_string(c.addressSpaceKiB) + " && exec \"$0\" \"$@\"' ";
+  cmd += Quote(std::string(MMREP_BINARY_DIR) + "/bin/" + c.module);
+  for (const auto& a : args)
+    cmd += " " + Quote(a);
+  cmd += " > " + Quote((logs / "out").string()) + " 2> " + Quote((logs / "err").string()) + " < /dev/null";
+  const int status = std::system(cmd.c_str());
+  ModuleRun run;
+  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  run.err = Slurp(logs / "err");
+
+  EXPECT_EQ(run.exitCode, c.exitCode) << run.err;
+  const auto lines = run.ErrLines();
+  ASSERT_EQ(lines.size(), 1u) << run.err;
+  std::printf("%s\n", lines[0].c_str()); // what the user reads
+  EXPECT_EQ(lines[0].rfind(c.module + ": error: ", 0), 0u) << lines[0];
+  EXPECT_NE(lines[0].find(c.culprit), std::string::npos) << "culprit '" << c.culprit << "' not named: " << lines[0];
+  EXPECT_EQ(Differences(before, Snapshot(dir)), "") << lines[0];
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, BadInput, ::testing::ValuesIn(BadInputCases()),
+                         [](const ::testing::TestParamInfo<BadInputCase>& info) { return info.param.name; });
+
+} // namespace
