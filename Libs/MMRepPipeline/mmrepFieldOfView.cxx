@@ -1,5 +1,7 @@
 #include "mmrepFieldOfView.h"
 
+#include <string>
+
 #include "mmrepSimilarityTransform.h"
 
 #include <algorithm>
@@ -19,7 +21,15 @@ void CheckFieldOfView(const CTImage* ct, const FEMesh& atlas, const std::string&
     source.push_back(atlas.landmarks[i].position);
     target.push_back(targets[i]);
   }
-  const SimilarityTransform toCT = EstimateSimilarity(source, target);
+  SimilarityTransform toCT;
+  try
+  {
+    toCT = EstimateSimilarity(source, target);
+  }
+  catch (const std::invalid_argument& e)
+  {
+    throw std::invalid_argument(std::string("control points: they cannot place the atlas (") + e.what() + ")");
+  }
   const auto set = atlas.nodeSets.find(faceSet);
   if (set == atlas.nodeSets.end())
     throw std::invalid_argument("atlas: node set '" + faceSet + "' is missing");
