@@ -4,21 +4,13 @@
 // linear part with eigenvalue -1, and the plane holds the midpoints of p and S(p).
 #pragma once
 
+#include "mmrepPlane.h" // struct Plane
+
 #include <Eigen/Core>
 #include <vtkPolyData.h>
 
 namespace mmrep
 {
-
-struct Plane
-{
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // a point on the plane (LPS mm)
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitX(); // unit normal, pointing to the patient's left (+x side)
-
-  double SignedDistance(const Eigen::Vector3d& p) const { return normal.dot(p - point); }
-  Eigen::Vector3d Mirror(const Eigen::Vector3d& p) const { return p - 2.0 * SignedDistance(p) * normal; }
-  Eigen::Vector3d Project(const Eigen::Vector3d& p) const { return p - SignedDistance(p) * normal; }
-};
 
 struct SymmetryPlaneOptions
 {
