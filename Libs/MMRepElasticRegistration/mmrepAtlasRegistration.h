@@ -183,8 +183,6 @@ void ApplyTransform(const ElasticTransform& transform, FEMesh& mesh);
 SurfaceErrorStatistics MeasureSurfaceError(const std::vector<Point3>& nodes, const std::vector<std::int32_t>& ids,
                                            vtkPolyData* surface);
 
-// Least-squares plane through a node set (e.g. the atlas's `midsagittal` nodes), normal towards
-// +x (patient left). Throws std::invalid_argument when the set is missing or has < 3 nodes.
-Plane FitPlaneToNodeSet(const FEMesh& mesh, const std::string& set);
+// FitPlaneToNodeSet (a node set's least-squares plane) is in mmrepPlane.h (MMRepFE).
 
 } // namespace mmrep

@@ -2,7 +2,9 @@
 // *INCLUDEd from an analysis deck. Ids are 1-based: node id = node index + 1, element id =
 // element index + 1 (solids and cables share one numbering, as Abaqus requires).
 #include "mmrepFEExport.h"
+#include "mmrepHalfModel.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 
 namespace mmrep::detail
@@ -111,6 +113,28 @@ void WriteAbaqus(const FEMesh& mesh, std::ostream& out)
     WriteSet(out, "NSET", names.muscleNodes[k], "muscle '" + name + "' track nodes", muscle.nodes);
     WriteSet(out, "ELSET", names.muscles[k], "muscle '" + name + "' cables", muscle.cables);
     ++k;
+  }
+
+  // A half model: its plane nodes move within the plane. Local x axis = plane normal (point a of
+  // *TRANSFORM, TYPE=R), b any in-plane direction; *BOUNDARY on local DOF 1.
+  if (IsHalfModel(mesh))
+  {
+    const Plane plane = SymmetryPlaneOf(mesh);
+    const Eigen::Vector3d& n = plane.normal;
+    Eigen::Vector3d axis = Eigen::Vector3d::Zero();
+    Eigen::Index least = 0;
+    n.cwiseAbs().minCoeff(&least);
+    axis[least] = 1;
+    const Eigen::Vector3d b = n.cross(axis).normalized();
+    const auto set = std::distance(mesh.nodeSets.begin(), mesh.nodeSets.find(kSymmetryBoundarySet));
+    const std::string& name = names.nodeSets[static_cast<std::size_t>(set)];
+    out << "** symmetry boundary of this half model: normal displacement 0 on the mid-sagittal plane (point "
+        << FormatDouble(plane.point.x()) << ", " << FormatDouble(plane.point.y()) << ", " << FormatDouble(plane.point.z())
+        << ")\n";
+    out << "*TRANSFORM, NSET=" << name << ", TYPE=R\n"
+        << FormatDouble(n.x()) << ", " << FormatDouble(n.y()) << ", " << FormatDouble(n.z()) << ", "
+        << FormatDouble(b.x()) << ", " << FormatDouble(b.y()) << ", " << FormatDouble(b.z()) << "\n";
+    out << "*BOUNDARY\n" << name << ", 1, 1\n";
   }
 }
 

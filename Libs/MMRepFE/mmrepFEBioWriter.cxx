@@ -4,6 +4,7 @@
 // and one part "ECABLE" of line2 elements for all muscle cables. Ids are 1-based: node id = node
 // index + 1, element id = element index + 1 across all parts.
 #include "mmrepFEExport.h"
+#include "mmrepHalfModel.h"
 
 namespace mmrep::detail
 {
@@ -116,7 +117,34 @@ void WriteFEBio(const FEMesh& mesh, std::ostream& out)
   k = 0;
   for (const auto& entry : mesh.muscles)
     WriteElementSet(out, names.muscles[k++], entry.second.cables);
+  // A half model: the plane faces as a surface carrying FEBio's "symmetry plane" constraint
+  // (u·n = 0 on every node of the surface, augmented Lagrangian).
+  std::string symmetrySurface;
+  if (IsHalfModel(mesh))
+  {
+    symmetrySurface = partNames.Add(kSymmetryBoundarySet);
+    out << "    <Surface name=\"" << symmetrySurface << "\">\n";
+    int id = 0;
+    for (const auto& face : SymmetryBoundaryFaces(mesh))
+    {
+      const char* type = face.size() == 4 ? "quad4" : "tri3";
+      out << "      <" << type << " id=\"" << ++id << "\">";
+      for (std::size_t j = 0; j < face.size(); ++j)
+        out << (j ? "," : "") << face[j] + 1;
+      out << "</" << type << ">\n";
+    }
+    out << "    </Surface>\n";
+  }
   out << "  </Mesh>\n";
+  if (!symmetrySurface.empty())
+  {
+    out << "  <Constraints>\n";
+    out << "    <constraint type=\"symmetry plane\" surface=\"" << symmetrySurface << "\">\n";
+    out << "      <laugon>1</laugon>\n      <penalty>1</penalty>\n      <tol>0.001</tol>\n"
+        << "      <minaug>0</minaug>\n      <maxaug>50</maxaug>\n";
+    out << "    </constraint>\n";
+    out << "  </Constraints>\n";
+  }
   out << "</febio_spec>\n";
 }
 

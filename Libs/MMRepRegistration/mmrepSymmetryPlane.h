@@ -6,21 +6,13 @@
 // map, so the plane does not depend on the order of the vertices or of the CT's voxels.
 #pragma once
 
+#include "mmrepPlane.h" // struct Plane
+
 #include <Eigen/Core>
 #include <vtkPolyData.h>
 
 namespace mmrep
 {
-
-struct Plane
-{
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // a point on the plane (LPS mm)
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitX(); // unit normal, pointing to the patient's left (+x side)
-
-  double SignedDistance(const Eigen::Vector3d& p) const { return normal.dot(p - point); }
-  Eigen::Vector3d Mirror(const Eigen::Vector3d& p) const { return p - 2.0 * SignedDistance(p) * normal; }
-  Eigen::Vector3d Project(const Eigen::Vector3d& p) const { return p - SignedDistance(p) * normal; }
-};
 
 struct SymmetryPlaneOptions
 {

@@ -2,6 +2,7 @@
 #include "mmrepCalculiXDeck.h"
 
 #include "mmrepFEExport.h"
+#include "mmrepHalfModel.h"
 
 #include <Eigen/Geometry>
 
@@ -98,6 +99,11 @@ void CheckActivations(const FEMesh& mesh, const std::vector<MuscleActivation>& a
   bool anyActive = false;
   for (const auto& a : activations)
   {
+    if (mesh.muscles.count(a.muscle) == 0 && IsHalfModel(mesh) && a.muscle.size() > 2 &&
+        a.muscle.compare(a.muscle.size() - 2, 2, "_R") == 0)
+      throw std::invalid_argument("muscle '" + a.muscle + "' is on the right side, which this half model does not hold "
+                                  "(it is the left half, with node set '" + kSymmetryBoundarySet + "'): activate '" +
+                                  a.muscle.substr(0, a.muscle.size() - 2) + "_L', its mirror image");
     if (mesh.muscles.count(a.muscle) == 0)
       throw std::invalid_argument("unknown muscle '" + a.muscle + "'; the model's muscles are: " +
                                   JoinNames(MuscleNames(mesh)));
@@ -371,31 +377,72 @@ DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, st
     }
   }
 
-  // Sliding nodes: n·u = 0, the largest normal component is the dependent term.
+  // Normal constraints n·u = 0: sliding nodes and, on a half model, the symmetry plane's nodes.
   std::vector<char> isFixed(mesh.nodes.size(), 0);
   for (auto n : fixed)
     isFixed[static_cast<std::size_t>(n)] = 1;
+  std::vector<std::int32_t> constrained; // in order of first constraint
+  std::map<std::int32_t, std::vector<Point3>> normals;
+  auto addNormal = [&](std::int32_t node, const Point3& normal) {
+    auto [it, fresh] = normals.emplace(node, std::vector<Point3>{});
+    if (fresh)
+      constrained.push_back(node);
+    it->second.push_back(normal.normalized());
+  };
   for (const auto& s : options.slidingNodes)
   {
     if (s.node < 0 || static_cast<std::size_t>(s.node) >= mesh.nodes.size() || !solidNode[static_cast<std::size_t>(s.node)])
       throw std::invalid_argument("sliding node " + std::to_string(s.node) + " is not a node of a solid element");
     if (isFixed[static_cast<std::size_t>(s.node)])
       continue;
-    const Point3 n = s.normal.normalized();
-    int lead = 0;
-    for (int d = 1; d < 3; ++d)
-      if (std::abs(n[d]) > std::abs(n[lead]))
-        lead = d;
-    std::vector<int> others;
-    for (int d = 0; d < 3; ++d)
-      if (d != lead && std::abs(n[d]) > 1e-12)
-        others.push_back(d);
-    out << "*EQUATION\n" << others.size() + 1 << "\n" << s.node + 1 << ", " << lead + 1 << ", " << FormatDouble(n[lead]);
-    for (int d : others)
-      out << ", " << s.node + 1 << ", " << d + 1 << ", " << FormatDouble(n[d]);
-    out << "\n";
+    addNormal(s.node, s.normal);
     ++summary.slidingNodes;
-    ++summary.equations;
+  }
+  if (options.symmetry && IsHalfModel(mesh))
+  {
+    // Muscle nodes on the plane follow their (left) host element through the embedding.
+    const Point3 normal = SymmetryPlaneOf(mesh).normal;
+    for (auto n : mesh.nodeSets.at(kSymmetryBoundarySet))
+      if (solidNode[static_cast<std::size_t>(n)] && !isFixed[static_cast<std::size_t>(n)])
+      {
+        addNormal(n, normal);
+        ++summary.symmetryNodes;
+      }
+  }
+  for (auto node : constrained)
+  {
+    // Reduced row echelon form of the node's constraints: each equation has its own dependent DOF
+    // (its largest term), absent from the node's other equations; dependent constraints drop out.
+    std::vector<Point3> rows;
+    std::vector<int> leads;
+    for (Point3 r : normals.at(node))
+    {
+      for (std::size_t i = 0; i < rows.size(); ++i)
+        r -= r[leads[i]] / rows[i][leads[i]] * rows[i];
+      if (!(r.norm() > 1e-9))
+        continue;
+      int lead = 0;
+      for (int d = 1; d < 3; ++d)
+        if (std::abs(r[d]) > std::abs(r[lead]))
+          lead = d;
+      for (auto& q : rows)
+        q -= q[lead] / r[lead] * r;
+      rows.push_back(r);
+      leads.push_back(lead);
+    }
+    for (std::size_t i = 0; i < rows.size(); ++i)
+    {
+      const Point3& n = rows[i];
+      std::vector<int> others;
+      for (int d = 0; d < 3; ++d)
+        if (d != leads[i] && std::abs(n[d]) > 1e-12 * std::abs(n[leads[i]]))
+          others.push_back(d);
+      out << "*EQUATION\n" << others.size() + 1 << "\n" << node + 1 << ", " << leads[i] + 1 << ", " << FormatDouble(n[leads[i]]);
+      for (int d : others)
+        out << ", " << node + 1 << ", " << d + 1 << ", " << FormatDouble(n[d]);
+      out << "\n";
+      ++summary.equations;
+    }
   }
 
   out << "*NSET, NSET=FIXED\n";

@@ -15,6 +15,8 @@
 //     *EQUATION per node, the element's own shape functions, so it is exact for any deformation);
 //   * fixed nodes (node set "skull" by default): *BOUNDARY 1–3;
 //   * sliding nodes (optional, e.g. the lips' inner surface on the teeth): n·u = 0 by *EQUATION;
+//   * a half model (mmrepHalfModel.h): its symmetry boundary's solid nodes keep n·u = 0, n the
+//     refitted plane's normal, by *EQUATION too (a node that also slides gets both constraints);
 //   * one *STEP, NLGEOM, *STATIC with automatic incrementation; *NODE FILE U (.frd).
 #pragma once
 
@@ -93,13 +95,14 @@ struct DeckOptions
   CableModel cables;
   std::string fixedNodeSet = "skull";
   std::vector<SlidingNode> slidingNodes; // e.g. LipSupportNodes(mesh); fixed nodes among them are skipped
+  bool symmetry = true; // a half model: its symmetry boundary's nodes move within the plane
   StepControl step;
 };
 
 // What the deck contains (for reports and tests).
 struct DeckSummary
 {
-  std::size_t solids = 0, springs = 0, equations = 0, fixedNodes = 0, slidingNodes = 0;
+  std::size_t solids = 0, springs = 0, equations = 0, fixedNodes = 0, slidingNodes = 0, symmetryNodes = 0;
   std::vector<std::string> activeMuscles; // muscles written as springs, in activation order
 };
 
@@ -107,7 +110,7 @@ struct DeckSummary
 std::vector<std::string> MuscleNames(const FEMesh& mesh);
 
 // Throws std::invalid_argument with one line when the mesh has no muscles, a muscle name is unknown
-// (the message lists the valid names), a level is outside [0, 1], a muscle is named twice, or no
+// (the message lists the valid names; on a half model a right-side "_R" muscle says so), a level is outside [0, 1], a muscle is named twice, or no
 // muscle has a positive level.
 void CheckActivations(const FEMesh& mesh, const std::vector<MuscleActivation>& activations);
 

@@ -8,6 +8,7 @@
 #include "mmrepFaceModelPictures.h"
 #include "mmrepFaceModelPipeline.h"
 #include "mmrepFaceModelReport.h"
+#include "mmrepHalfModel.h"
 #include "mmrepImageIO.h"
 #include "mmrepLandmarkIO.h"
 #include "mmrepSnapshot.h"
@@ -48,6 +49,8 @@ void Run(mmrep::cli::ModuleContext& ctx)
     throw ModuleError("--qualityThreshold must lie in [-1, 1]");
   if (!(args.Double("transformSpacing") > 0))
     throw ModuleError("--transformSpacing must be > 0");
+  if (args.Bool("halfModel") && args.Bool("asymmetric"))
+    throw ModuleError("--halfModel needs the symmetric model: drop --asymmetric");
 
   // The directory is staged first: an unwritable place fails before any work.
   FaceModelOutputDirectory out(args.String("outputDirectory"));
@@ -113,6 +116,13 @@ void Run(mmrep::cli::ModuleContext& ctx)
   }
   for (const char* format : {"vtu", "inp", "feb", "msh"})
     mmrep::WriteFEMesh(result.model, (dir / (std::string("model.") + format)).string(), format);
+  if (args.Bool("halfModel"))
+  {
+    files.emplace_back("half-model.vtu", "the left half of the model, symmetry boundary in node set symmetryBoundary (also .inp, .feb, .msh)");
+    const auto half = mmrep::LeftHalfModel(result.model);
+    for (const char* format : {"vtu", "inp", "feb", "msh"})
+      mmrep::WriteFEMesh(half, (dir / (std::string("half-model.") + format)).string(), format);
+  }
   ctx.progress.Report(0.88);
   const auto field = mmrep::SampleDisplacementField([&](const mmrep::Point3& x) { return result.AtlasToSubject(x); },
                                                     atlas.nodes, 10.0, args.Double("transformSpacing"));

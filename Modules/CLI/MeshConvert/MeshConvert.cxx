@@ -1,6 +1,7 @@
 // MeshConvert: FE face model from .vtu/.vtk to .vtu, .vtk, .inp, .feb or .msh (by extension).
 #include "mmrepCLI.h"
 #include "mmrepFEMeshIO.h"
+#include "mmrepHalfModel.h"
 
 #include <algorithm>
 
@@ -27,6 +28,17 @@ MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
     catch (const std::exception& e)
     {
       throw mmrep::cli::ModuleError(std::string("inputMesh ") + e.what());
+    }
+    if (ctx.args.Bool("half"))
+    {
+      try
+      {
+        mesh = mmrep::LeftHalfModel(mesh);
+      }
+      catch (const std::exception& e)
+      {
+        throw mmrep::cli::ModuleError("inputMesh " + input + ": no half model: " + e.what());
+      }
     }
     ctx.progress.Report(0.5);
 

@@ -348,10 +348,10 @@ MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
           maxDisplacement = std::max(maxDisplacement, result.displacements[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])].norm());
 
     std::printf("CalculiX: converged in %d increments, %d iterations, %d cutbacks, %.1f s (%d threads); "
-                "%zu solids, %zu cables, %zu equations, %zu fixed nodes, %zu sliding nodes\n",
+                "%zu solids, %zu cables, %zu equations, %zu fixed nodes, %zu sliding nodes, %zu symmetry-plane nodes\n",
                 result.run.increments, result.run.iterations, result.run.cutbacks, result.run.seconds,
                 options.run.threads, result.deck.solids, result.deck.springs, result.deck.equations,
-                result.deck.fixedNodes, result.deck.slidingNodes);
+                result.deck.fixedNodes, result.deck.slidingNodes, result.deck.symmetryNodes);
     for (const auto& m : result.muscles)
       std::printf("muscle %-36s activation %.2f  length %.1f -> %.1f mm (%+.1f %%)  cable force mean %.3f N, max %.3f N\n",
                   m.muscle.c_str(), m.level, m.restLength, m.length, 100 * (m.length / m.restLength - 1), m.meanForce,

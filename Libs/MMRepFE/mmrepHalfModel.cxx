@@ -1,0 +1,313 @@
+#include "mmrepHalfModel.h"
+
+#include <Eigen/Geometry>
+
+#include <vtkHexahedron.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkTetra.h>
+#include <vtkWedge.h>
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace mmrep
+{
+namespace
+{
+enum class Side : std::int8_t
+{
+  Right = -1,
+  Plane = 0,
+  Left = 1
+};
+
+// Parametric coordinates of `p` in a solid element (VTK convention) and its distance to it.
+double Locate(const FEMesh& mesh, const Element& e, const Point3& p, std::array<double, 3>& pcoords)
+{
+  vtkNew<vtkHexahedron> hex;
+  vtkNew<vtkWedge> wedge;
+  vtkNew<vtkTetra> tet;
+  vtkCell* cell = e.type == ElementType::Hexahedron ? static_cast<vtkCell*>(hex.Get())
+                  : e.type == ElementType::Wedge    ? static_cast<vtkCell*>(wedge.Get())
+                                                    : static_cast<vtkCell*>(tet.Get());
+  for (int k = 0; k < NodeCount(e.type); ++k)
+  {
+    cell->GetPoints()->SetPoint(k, mesh.nodes[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])].data());
+    cell->GetPointIds()->SetId(k, k);
+  }
+  double x[3] = {p.x(), p.y(), p.z()}, closest[3], dist2 = 0, weights[8];
+  int subId = 0;
+  const int status = cell->EvaluatePosition(x, closest, subId, pcoords.data(), dist2, weights);
+  if (status < 0)
+    return std::numeric_limits<double>::infinity();
+  return status == 1 ? 0.0 : std::sqrt(dist2);
+}
+
+std::vector<std::int32_t> Restrict(const std::vector<std::int32_t>& ids, const std::vector<std::int32_t>& newIndex)
+{
+  std::vector<std::int32_t> out;
+  for (auto id : ids)
+    if (newIndex[static_cast<std::size_t>(id)] >= 0)
+      out.push_back(newIndex[static_cast<std::size_t>(id)]);
+  return out;
+}
+} // namespace
+
+bool IsHalfModel(const FEMesh& mesh)
+{
+  const auto it = mesh.nodeSets.find(kSymmetryBoundarySet);
+  return it != mesh.nodeSets.end() && !it->second.empty();
+}
+
+Plane SymmetryPlaneOf(const FEMesh& half)
+{
+  if (!IsHalfModel(half))
+    throw std::invalid_argument("the model is not a half model (no node set '" + kSymmetryBoundarySet + "')");
+  return FitPlaneToNodeSet(half, kSymmetryBoundarySet);
+}
+
+std::vector<std::vector<std::int32_t>> SymmetryBoundaryFaces(const FEMesh& half)
+{
+  static const std::vector<std::vector<int>> hexFaces{{0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4},
+                                                      {3, 7, 6, 2}, {0, 3, 2, 1}, {4, 5, 6, 7}};
+  static const std::vector<std::vector<int>> wedgeFaces{{0, 1, 2}, {3, 5, 4}, {0, 3, 4, 1}, {1, 4, 5, 2}, {2, 5, 3, 0}};
+  static const std::vector<std::vector<int>> tetFaces{{0, 1, 3}, {1, 2, 3}, {2, 0, 3}, {0, 2, 1}};
+  std::vector<char> onPlane(half.nodes.size(), 0);
+  if (const auto it = half.nodeSets.find(kSymmetryBoundarySet); it != half.nodeSets.end())
+    for (auto n : it->second)
+      onPlane[static_cast<std::size_t>(n)] = 1;
+  // Sorted node list -> (elements sharing the face, the face as seen from its first element, that element).
+  std::map<std::vector<std::int32_t>, std::pair<int, std::pair<std::vector<std::int32_t>, std::size_t>>> faces;
+  for (std::size_t i = 0; i < half.elements.size(); ++i)
+  {
+    const Element& e = half.elements[i];
+    const auto* table = e.type == ElementType::Hexahedron ? &hexFaces
+                        : e.type == ElementType::Wedge    ? &wedgeFaces
+                        : e.type == ElementType::Tetrahedron ? &tetFaces
+                                                             : nullptr;
+    if (table == nullptr)
+      continue;
+    for (const auto& f : *table)
+    {
+      std::vector<std::int32_t> ids;
+      for (int k : f)
+        ids.push_back(e.nodes[static_cast<std::size_t>(k)]);
+      if (!std::all_of(ids.begin(), ids.end(), [&](std::int32_t n) { return onPlane[static_cast<std::size_t>(n)] != 0; }))
+        continue;
+      auto key = ids;
+      std::sort(key.begin(), key.end());
+      auto& entry = faces[key];
+      if (entry.first++ == 0)
+        entry.second = {ids, i};
+    }
+  }
+  std::vector<std::vector<std::int32_t>> out;
+  for (auto& [key, entry] : faces)
+  {
+    if (entry.first != 1)
+      continue;
+    auto& [ids, element] = entry.second;
+    // Newell normal of the face against the direction from the element's centroid to the face's.
+    const Element& e = half.elements[element];
+    Point3 normal = Point3::Zero(), faceCentre = Point3::Zero(), centre = Point3::Zero();
+    for (std::size_t k = 0; k < ids.size(); ++k)
+    {
+      const Point3& a = half.nodes[static_cast<std::size_t>(ids[k])];
+      const Point3& b = half.nodes[static_cast<std::size_t>(ids[(k + 1) % ids.size()])];
+      normal += a.cross(b);
+      faceCentre += a / static_cast<double>(ids.size());
+    }
+    for (int k = 0; k < NodeCount(e.type); ++k)
+      centre += half.nodes[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])] / NodeCount(e.type);
+    if (normal.dot(faceCentre - centre) < 0)
+      std::reverse(ids.begin(), ids.end());
+    out.push_back(ids);
+  }
+  return out;
+}
+
+FEMesh LeftHalfModel(const FEMesh& full, const HalfModelOptions& options)
+{
+  full.Validate();
+  if (IsHalfModel(full))
+    throw std::invalid_argument("the model already is a half model (it has node set '" + kSymmetryBoundarySet + "')");
+  const Plane plane = FitPlaneToNodeSet(full, options.planeSet);
+  const double tol = options.tolerance;
+
+  std::vector<char> onPlaneSet(full.nodes.size(), 0);
+  for (auto n : full.nodeSets.at(options.planeSet))
+  {
+    const double d = plane.SignedDistance(full.nodes[static_cast<std::size_t>(n)]);
+    if (std::abs(d) > tol)
+      throw std::invalid_argument("node " + std::to_string(n) + " of set '" + options.planeSet + "' lies " +
+                                  std::to_string(d) + " mm off the set's plane: the model is not symmetric about it");
+    onPlaneSet[static_cast<std::size_t>(n)] = 1;
+  }
+  std::vector<Side> side(full.nodes.size());
+  for (std::size_t i = 0; i < full.nodes.size(); ++i)
+  {
+    const double d = plane.SignedDistance(full.nodes[i]);
+    side[i] = onPlaneSet[i] || std::abs(d) <= tol ? Side::Plane : d > 0 ? Side::Left : Side::Right;
+  }
+
+  // Solid elements: centroid side; an element with nodes on both sides is not cut along the plane.
+  std::vector<char> keepElement(full.elements.size(), 0);
+  for (std::size_t i = 0; i < full.elements.size(); ++i)
+  {
+    const Element& e = full.elements[i];
+    if (e.type == ElementType::Cable)
+      continue;
+    bool left = false, right = false;
+    Point3 centroid = Point3::Zero();
+    for (int k = 0; k < NodeCount(e.type); ++k)
+    {
+      const auto n = static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)]);
+      left = left || side[n] == Side::Left;
+      right = right || side[n] == Side::Right;
+      centroid += full.nodes[n] / NodeCount(e.type);
+    }
+    if (left && right)
+      throw std::invalid_argument("solid element " + std::to_string(i) + " straddles the symmetry plane of set '" +
+                                  options.planeSet + "': a half model needs a mesh cut along its plane nodes");
+    if (!left && !right)
+      throw std::invalid_argument("solid element " + std::to_string(i) + " lies flat on the symmetry plane");
+    keepElement[i] = left && plane.SignedDistance(centroid) > 0;
+  }
+
+  // Muscle tracks: maximal runs of left/plane points that hold a left point.
+  struct Piece
+  {
+    std::string name;
+    std::size_t begin, end; // track points [begin, end)
+    const MuscleTrack* track;
+  };
+  std::vector<Piece> pieces;
+  for (const auto& [name, track] : full.muscles)
+  {
+    int part = 0;
+    std::size_t begin = 0;
+    const std::size_t count = track.nodes.size();
+    for (std::size_t k = 0; k <= count; ++k)
+    {
+      const bool rightPoint = k < count && side[static_cast<std::size_t>(track.nodes[k])] == Side::Right;
+      if (k > 0 && k < count)
+      {
+        const Side a = side[static_cast<std::size_t>(track.nodes[k - 1])], b = side[static_cast<std::size_t>(track.nodes[k])];
+        if (static_cast<int>(a) * static_cast<int>(b) < 0)
+          throw std::invalid_argument("muscle '" + name + "' crosses the symmetry plane between its points " +
+                                      std::to_string(k - 1) + " and " + std::to_string(k) + " without a point on it");
+      }
+      if (k == count || rightPoint)
+      {
+        bool hasLeft = false;
+        for (std::size_t j = begin; j < k; ++j)
+          hasLeft = hasLeft || side[static_cast<std::size_t>(track.nodes[j])] == Side::Left;
+        if (hasLeft && k - begin >= 2)
+          pieces.push_back({part++ == 0 ? name : name + "_part" + std::to_string(part), begin, k, &track});
+        begin = k + 1;
+      }
+    }
+  }
+  for (const auto& piece : pieces)
+    for (std::size_t c = piece.begin; c + 1 < piece.end; ++c)
+      keepElement[static_cast<std::size_t>(piece.track->cables[c])] = 1;
+
+  // Nodes: those of kept elements and tracks, and free nodes (in no element) on the left or the plane.
+  std::vector<char> keepNode(full.nodes.size(), 0), referenced(full.nodes.size(), 0);
+  for (std::size_t i = 0; i < full.elements.size(); ++i)
+    for (int k = 0; k < NodeCount(full.elements[i].type); ++k)
+    {
+      const auto n = static_cast<std::size_t>(full.elements[i].nodes[static_cast<std::size_t>(k)]);
+      referenced[n] = 1;
+      keepNode[n] = keepNode[n] || keepElement[i];
+    }
+  for (const auto& [name, track] : full.muscles)
+    for (auto n : track.nodes)
+      referenced[static_cast<std::size_t>(n)] = 1;
+  for (const auto& piece : pieces)
+    for (std::size_t k = piece.begin; k < piece.end; ++k)
+      keepNode[static_cast<std::size_t>(piece.track->nodes[k])] = 1;
+  for (std::size_t i = 0; i < full.nodes.size(); ++i)
+    keepNode[i] = keepNode[i] || (!referenced[i] && side[i] != Side::Right);
+
+  FEMesh half;
+  std::vector<std::int32_t> nodeIndex(full.nodes.size(), -1), elementIndex(full.elements.size(), -1);
+  for (std::size_t i = 0; i < full.nodes.size(); ++i)
+    if (keepNode[i])
+    {
+      nodeIndex[i] = static_cast<std::int32_t>(half.nodes.size());
+      half.nodes.push_back(full.nodes[i]);
+    }
+  for (std::size_t i = 0; i < full.elements.size(); ++i)
+    if (keepElement[i])
+    {
+      Element e = full.elements[i];
+      for (int k = 0; k < NodeCount(e.type); ++k)
+        e.nodes[static_cast<std::size_t>(k)] = nodeIndex[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])];
+      elementIndex[i] = static_cast<std::int32_t>(half.elements.size());
+      half.elements.push_back(e);
+    }
+  for (const auto& [name, ids] : full.nodeSets)
+    if (auto kept = Restrict(ids, nodeIndex); !kept.empty())
+      half.nodeSets[name] = std::move(kept);
+  for (const auto& [name, ids] : full.elementSets)
+    if (auto kept = Restrict(ids, elementIndex); !kept.empty())
+      half.elementSets[name] = std::move(kept);
+  for (const auto& piece : pieces)
+  {
+    const MuscleTrack& track = *piece.track;
+    MuscleTrack out;
+    for (std::size_t k = piece.begin; k < piece.end; ++k)
+    {
+      const auto n = static_cast<std::size_t>(track.nodes[k]);
+      out.nodes.push_back(nodeIndex[n]);
+      if (k + 1 < piece.end)
+        out.cables.push_back(elementIndex[static_cast<std::size_t>(track.cables[k])]);
+      if (track.embedding.empty())
+        continue;
+      Embedding emb = track.embedding[k];
+      if (elementIndex[static_cast<std::size_t>(emb.element)] >= 0)
+        emb.element = elementIndex[static_cast<std::size_t>(emb.element)];
+      else
+      {
+        // A point on the plane embedded in a right element: the kept element nearest to it.
+        double best = std::numeric_limits<double>::infinity();
+        for (std::size_t e = 0; e < half.elements.size(); ++e)
+        {
+          if (half.elements[e].type == ElementType::Cable)
+            continue;
+          std::array<double, 3> pcoords{};
+          const double d = Locate(half, half.elements[e], full.nodes[n], pcoords);
+          if (d < best)
+          {
+            best = d;
+            emb = {static_cast<std::int32_t>(e), pcoords};
+          }
+          if (d == 0)
+            break;
+        }
+        if (!(best <= tol))
+          throw std::invalid_argument("muscle '" + piece.name + "': point " + std::to_string(k) +
+                                      " lies in no element of the left half");
+      }
+      out.embedding.push_back(emb);
+    }
+    half.muscles[piece.name] = std::move(out);
+  }
+  for (const auto& l : full.landmarks)
+    if (plane.SignedDistance(l.position) >= -tol)
+      half.landmarks.push_back(l);
+  if (auto plan = half.nodeSets.find(options.planeSet); plan != half.nodeSets.end())
+    half.nodeSets[kSymmetryBoundarySet] = plan->second;
+  if (!IsHalfModel(half) || half.SolidElementCount() == 0)
+    throw std::invalid_argument("the left half of the model is empty or has no node on the plane");
+  half.Validate();
+  return half;
+}
+
+} // namespace mmrep
