@@ -428,7 +428,9 @@ TEST(HalfModel, HalfAtlasSimulatesTheSymmetricSmileLikeTheFullModel)
         std::printf("  %-20s full (%7.3f %7.3f %7.3f)  half (%7.3f %7.3f %7.3f)  difference %.4f mm = %.2f %% of |u|\n",
                     fm.name.c_str(), fm.displacement.x(), fm.displacement.y(), fm.displacement.z(), hm.displacement.x(),
                     hm.displacement.y(), hm.displacement.z(), diff, 100 * diff / std::max(fm.displacement.norm(), 1e-12));
-        EXPECT_LE(diff, 0.05 * fm.displacement.norm()) << fm.name;
+        // 5 % of the landmark's motion; for landmarks that barely move (an eye corner in a smile,
+        // a hundredth of the mouth corner's motion) 5 % of a tenth of the largest motion.
+        EXPECT_LE(diff, 0.05 * std::max(fm.displacement.norm(), 0.1 * largest)) << fm.name;
         ++compared;
       }
   EXPECT_EQ(compared, half.landmarks.size());

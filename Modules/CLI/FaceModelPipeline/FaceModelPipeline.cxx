@@ -49,8 +49,8 @@ void Run(mmrep::cli::ModuleContext& ctx)
     throw ModuleError("--qualityThreshold must lie in [-1, 1]");
   if (!(args.Double("transformSpacing") > 0))
     throw ModuleError("--transformSpacing must be > 0");
-  if (args.Bool("halfModel") && args.Bool("asymmetric"))
-    throw ModuleError("--halfModel needs the symmetric model: drop --asymmetric");
+  if (args.Bool("halfModel") && args.String("symmetry") == "full")
+    throw ModuleError("--halfModel needs a symmetric model: use --symmetry half-face (the default) or averaged");
 
   // The directory is staged first: an unwritable place fails before any work.
   FaceModelOutputDirectory out(args.String("outputDirectory"));

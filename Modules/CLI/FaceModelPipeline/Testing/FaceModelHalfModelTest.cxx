@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -105,6 +107,9 @@ TEST(FaceModelPipelineModule, HalfModelOfTheSpeakerSimulatesTheSymmetricSmileLik
 
   const auto fullMotion = LandmarkMotion(full, fullOut), halfMotion = LandmarkMotion(half, halfOut);
   ASSERT_EQ(halfMotion.size(), half.landmarks.size());
+  double largest = 0;
+  for (const auto& [name, u] : fullMotion)
+    largest = std::max(largest, u.norm());
   for (const auto& [name, uh] : halfMotion)
   {
     ASSERT_EQ(fullMotion.count(name), 1u) << name;
@@ -112,7 +117,8 @@ TEST(FaceModelPipelineModule, HalfModelOfTheSpeakerSimulatesTheSymmetricSmileLik
     const double diff = (uh - uf).norm();
     std::printf("  %-20s full (%7.3f %7.3f %7.3f)  half (%7.3f %7.3f %7.3f)  difference %.4f mm = %.2f %%\n", name.c_str(),
                 uf.x(), uf.y(), uf.z(), uh.x(), uh.y(), uh.z(), diff, 100 * diff / std::max(uf.norm(), 1e-12));
-    EXPECT_LE(diff, 0.05 * uf.norm()) << name;
+    // 5 % of the landmark's motion (of a tenth of the largest for landmarks that barely move).
+    EXPECT_LE(diff, 0.05 * std::max(uf.norm(), 0.1 * largest)) << name;
   }
   const auto corner = ReturnVector(hv, "leftLipCornerDisplacement");
   ASSERT_EQ(corner.size(), 3u);
