@@ -14,7 +14,7 @@ PACKAGES=(
   libgtest-dev             # unit tests
   libxml2-utils            # xmllint: module descriptions against the Slicer schema
   calculix-ccx gmsh        # real FE tools that read our exports in the tests
-  xvfb xauth               # off-screen X server for VTK pictures
+  xvfb xauth libx11-dev     # off-screen X server for VTK pictures, X connection check
 )
 
 missing=()

@@ -15,8 +15,12 @@
 #include <vtkTextProperty.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <stdexcept>
+#include <thread>
+
+#include <X11/Xlib.h> // last: its macros (None, Status, Bool) clash with other headers
 
 namespace mmrep
 {
@@ -58,16 +62,33 @@ const char* ViewName(View v)
 }
 } // namespace
 
+namespace
+{
+constexpr int kDisplayAttempts = 20;
+constexpr int kDisplayRetryMilliseconds = 250; // 5 s in all
+} // namespace
+
 void RequireDisplay(const std::string& pngPath)
 {
   const char* display = std::getenv("DISPLAY");
   if (display == nullptr || *display == '\0')
     throw std::runtime_error("no X display for rendering " + pngPath + ": run under xvfb-run -a");
-  // Mesa's software rasteriser (llvmpipe, what Xvfb offers) renders with worker threads that its
-  // exit handlers tear down; on a loaded machine a module now and then ended with SIGABRT after
-  // writing its pictures. One picture needs no threads: render in the calling thread. A value the
-  // user set is kept.
-  setenv("LP_NUM_THREADS", "0", 0);
+  // VTK aborts the process when it cannot connect to the X server (vtkXOpenGLRenderWindow), with its
+  // message silenced: connect here first, a few times (a server just started may not accept yet),
+  // and fail with one line instead.
+  bool connected = false;
+  for (int attempt = 0; attempt < kDisplayAttempts && !connected; ++attempt)
+  {
+    if (Display* x = XOpenDisplay(nullptr))
+    {
+      XCloseDisplay(x);
+      connected = true;
+    }
+    else
+      std::this_thread::sleep_for(std::chrono::milliseconds(kDisplayRetryMilliseconds));
+  }
+  if (!connected)
+    throw std::runtime_error(std::string("cannot connect to the X display '") + display + "' for rendering " + pngPath);
 }
 
 void WriteWindowPNG(vtkRenderWindow* window, const std::string& pngPath)

@@ -1,6 +1,8 @@
 // Test helper: runs a module executable from build/bin and captures what a user would see.
 #pragma once
 
+#include <unistd.h>
+
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -61,7 +63,10 @@ inline ModuleRun RunModuleExecutable(const std::string& module, const std::vecto
   if (needsDisplay && (display == nullptr || *display == '\0'))
     // Our own auth file: xvfb-run then makes no temporary folder, whose cleanup fails now and then
     // when two tests run it at once (ctest -j2). The screen leaves room for several 600-px views.
-    cmd = "xvfb-run -a -f " + Quote((dir / "Xauthority").string()) + " -s \"-screen 0 2560x1600x24\" ";
+    // Server numbers searched from one of this process's own: concurrent xvfb-run -a calls that all
+    // start at 99 can pick the same free number, and one module then loses its server.
+    cmd = "xvfb-run -a -n " + std::to_string(100 + ::getpid() % 20000) + " -f " + Quote((dir / "Xauthority").string()) +
+          " -s \"-screen 0 2560x1600x24\" ";
   cmd += Quote(std::string(MMREP_BINARY_DIR) + "/bin/" + module);
   for (const auto& a : args)
     cmd += " " + Quote(a);
