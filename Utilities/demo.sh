@@ -14,7 +14,7 @@ mkdir -p "$(dirname "$out")"
 
 # Pictures need an X display; Debian's VTK renders through X11.
 render=()
-if [ -z "${DISPLAY:-}" ]; then render=(xvfb-run -a -n $((100 + $$ % 20000)) -s "-screen 0 2560x1600x24"); fi
+if [ -z "${DISPLAY:-}" ]; then render=(xvfb-run -a -n $((100 + $$ % 20000)) -s "-screen 0 2560x1600x24 -noreset"); fi
 
 step() { echo; echo "== $*"; }
 # Runs a module and hides its Slicer progress lines; the module's exit status is kept (grep's "no

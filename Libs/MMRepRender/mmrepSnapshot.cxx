@@ -75,19 +75,17 @@ void RequireDisplay(const std::string& pngPath)
     throw std::runtime_error("no X display for rendering " + pngPath + ": run under xvfb-run -a");
   // VTK aborts the process when it cannot connect to the X server (vtkXOpenGLRenderWindow), with its
   // message silenced: connect here first, a few times (a server just started may not accept yet),
-  // and fail with one line instead.
-  bool connected = false;
-  for (int attempt = 0; attempt < kDisplayAttempts && !connected; ++attempt)
+  // and fail with one line instead. The connection stays open for the life of the process: an X
+  // server started without -noreset (xvfb-run's default) resets when its last client leaves, and a
+  // window opened during the reset cannot connect.
+  static Display* held = nullptr;
+  for (int attempt = 0; attempt < kDisplayAttempts && held == nullptr; ++attempt)
   {
-    if (Display* x = XOpenDisplay(nullptr))
-    {
-      XCloseDisplay(x);
-      connected = true;
-    }
-    else
+    held = XOpenDisplay(nullptr);
+    if (held == nullptr)
       std::this_thread::sleep_for(std::chrono::milliseconds(kDisplayRetryMilliseconds));
   }
-  if (!connected)
+  if (held == nullptr)
     throw std::runtime_error(std::string("cannot connect to the X display '") + display + "' for rendering " + pngPath);
 }
 

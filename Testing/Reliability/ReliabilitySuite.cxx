@@ -8,6 +8,7 @@
 #include <itkRegionOfInterestImageFilter.h>
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstring>
@@ -206,7 +207,8 @@ TEST_P(BadInput, OneLineNothingTouchedNothingLeft)
   std::string cmd = "cd " + Quote(dir.string()) + " && TMPDIR=" + Quote((dir / "tmp").string()) + " ";
   const char* display = std::getenv("DISPLAY");
   if (c.display && (display == nullptr || *display == '\0'))
-    cmd += "xvfb-run -a -f " + Quote((logs / "Xauthority").string()) + " -s \"-screen 0 1600x1200x24\" ";
+    cmd += "xvfb-run -a -n " + std::to_string(100 + ::getpid() % 20000) + " -f " + Quote((logs / "Xauthority").string()) +
+           " -s \"-screen 0 1600x1200x24 -noreset\" ";
   if (c.addressSpaceKiB > 0)
     cmd += "sh -c 'ulimit -v " + std::to_string(c.addressSpaceKiB) + " && exec \"$0\" \"$@\"' ";
   cmd += Quote(std::string(MMREP_BINARY_DIR) + "/bin/" + c.module);

@@ -66,7 +66,7 @@ inline ModuleRun RunModuleExecutable(const std::string& module, const std::vecto
     // Server numbers searched from one of this process's own: concurrent xvfb-run -a calls that all
     // start at 99 can pick the same free number, and one module then loses its server.
     cmd = "xvfb-run -a -n " + std::to_string(100 + ::getpid() % 20000) + " -f " + Quote((dir / "Xauthority").string()) +
-          " -s \"-screen 0 2560x1600x24\" ";
+          " -s \"-screen 0 2560x1600x24 -noreset\" ";
   cmd += Quote(std::string(MMREP_BINARY_DIR) + "/bin/" + module);
   for (const auto& a : args)
     cmd += " " + Quote(a);
