@@ -19,7 +19,15 @@ void CheckFieldOfView(const CTImage* ct, const FEMesh& atlas, const std::string&
     source.push_back(atlas.landmarks[i].position);
     target.push_back(targets[i]);
   }
-  const SimilarityTransform toCT = EstimateSimilarity(source, target);
+  SimilarityTransform toCT;
+  try
+  {
+    toCT = EstimateSimilarity(source, target);
+  }
+  catch (const std::invalid_argument&)
+  {
+    return; // control points that place nothing (coincident, collinear): the pipeline reports them itself
+  }
   const auto set = atlas.nodeSets.find(faceSet);
   if (set == atlas.nodeSets.end())
     throw std::invalid_argument("atlas: node set '" + faceSet + "' is missing");
