@@ -1,7 +1,5 @@
 #include "mmrepFieldOfView.h"
 
-#include <string>
-
 #include "mmrepSimilarityTransform.h"
 
 #include <algorithm>
@@ -26,9 +24,9 @@ void CheckFieldOfView(const CTImage* ct, const FEMesh& atlas, const std::string&
   {
     toCT = EstimateSimilarity(source, target);
   }
-  catch (const std::invalid_argument& e)
+  catch (const std::invalid_argument&)
   {
-    throw std::invalid_argument(std::string("control points: they cannot place the atlas (") + e.what() + ")");
+    return; // control points that place nothing (coincident, collinear): the pipeline reports them itself
   }
   const auto set = atlas.nodeSets.find(faceSet);
   if (set == atlas.nodeSets.end())
