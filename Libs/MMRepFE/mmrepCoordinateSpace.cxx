@@ -3,7 +3,6 @@
 
 #include <vtkDataObject.h>
 #include <vtkFieldData.h>
-#include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkStringArray.h>
 
@@ -34,15 +33,6 @@ FileSpace SpaceFromFieldData(vtkDataObject* data)
   vtkFieldData* field = data ? data->GetFieldData() : nullptr;
   auto* array = field ? vtkStringArray::SafeDownCast(field->GetAbstractArray(kTag)) : nullptr;
   return array && array->GetNumberOfValues() > 0 ? Parse(array->GetValue(0)) : FileSpace::Untagged;
-}
-
-void TagLPSInFieldData(vtkDataObject* data)
-{
-  RemoveSpaceTag(data);
-  vtkNew<vtkStringArray> tag;
-  tag->SetName(kTag);
-  tag->InsertNextValue("LPS");
-  data->GetFieldData()->AddArray(tag);
 }
 
 void RemoveSpaceTag(vtkDataObject* data)

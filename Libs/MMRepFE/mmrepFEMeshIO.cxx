@@ -253,9 +253,7 @@ void WriteFEMesh(const FEMesh& mesh, const std::string& path, const std::string&
     writer->EncodeAppendedDataOff(); // raw binary
     writer->SetHeaderTypeToUInt64();
     writer->SetCompressorTypeToZLib();
-    auto grid = ToVTK(mesh);
-    TagLPSInFieldData(grid); // Slicer's convention: the coordinate system in the field data
-    WriteVTK(writer.Get(), grid, path);
+    WriteVTK(writer.Get(), ToVTK(mesh), path);
   }
   else if (f == "vtk")
   {

@@ -191,10 +191,7 @@ void WriteSurface(vtkPolyData* surface, const std::string& path, const std::stri
   if (format == "vtp")
   {
     auto w = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-    auto tagged = vtkSmartPointer<vtkPolyData>::New();
-    tagged->ShallowCopy(surface);
-    TagLPSInFieldData(tagged); // Slicer's convention for .vtp: SPACE in the field data
-    w->SetInputData(tagged);
+    w->SetInputData(surface);
     w->SetFileName(path.c_str());
     // LZ4: files about as small as zlib's for meshes, compressed several times faster (VTK >= 8 reads it).
     w->SetCompressorTypeToLZ4();
