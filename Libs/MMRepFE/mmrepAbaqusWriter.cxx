@@ -1,6 +1,7 @@
 // Abaqus / CalculiX input deck (.inp): mesh and sets only, no material or step, so the file can be
 // *INCLUDEd from an analysis deck. Ids are 1-based: node id = node index + 1, element id =
-// element index + 1 (solids and cables share one numbering, as Abaqus requires).
+// element index + 1 (solids and cables share one numbering, as Abaqus requires). A half model
+// ends with its symmetry condition (local system on the plane nodes, normal DOF fixed).
 #include "mmrepFEExport.h"
 #include "mmrepHalfModel.h"
 

@@ -2,7 +2,8 @@
 // sets), to be completed with materials, MeshDomains and steps in FEBio Studio or a template.
 // Parts: one per (tissue layer, solid type), named "<layer set>_<type>" (layer_epidermis_hex8, …),
 // and one part "ECABLE" of line2 elements for all muscle cables. Ids are 1-based: node id = node
-// index + 1, element id = element index + 1 across all parts.
+// index + 1, element id = element index + 1 across all parts. A half model adds its plane faces as a
+// <Surface> and a "symmetry plane" constraint on it.
 #include "mmrepFEExport.h"
 #include "mmrepHalfModel.h"
 

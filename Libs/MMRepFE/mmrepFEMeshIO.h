@@ -6,6 +6,8 @@
 //   .inp  Abaqus/CalculiX: write (C3D8, C3D6, C3D4, T3D2; *NSET/*ELSET for every set, layer and muscle).
 //   .feb  FEBio format 3.0: write.
 //   .msh  Gmsh 4.1 ASCII: write, with physical groups for layers, sets and muscles.
+// A half model (mmrepHalfModel.h) also carries its symmetry condition in .inp (*TRANSFORM +
+// *BOUNDARY) and .feb (symmetry-plane constraint on the plane's faces).
 // Errors (missing file, unknown extension, unreadable content, empty mesh) throw std::runtime_error
 // with one line naming the file.
 #pragma once

@@ -1,5 +1,6 @@
 // Runs build/bin/MeshConvert as a user would and checks its files, stdout and stderr.
 #include "mmrepFEMeshIO.h"
+#include "mmrepHalfModel.h"
 #include "mmrepFETestMesh.h"
 #include "mmrepFETestUtilities.h"
 
@@ -124,4 +125,27 @@ TEST(MeshConvert, FailuresPrintOneLineAndLeaveNoOutput)
   const auto result = mmrep::testing::Run(std::string("'") + MESHCONVERT_EXECUTABLE + "' " + Quote(good), dir);
   EXPECT_NE(result.status, 0);
   EXPECT_EQ(LineCount(result.err), 1u) << result.err;
+}
+
+// --half: the atlas's left half, as LeftHalfModel makes it, in every format; a model that cannot be
+// cut is one line and no output.
+TEST(MeshConvert, HalfWritesTheLeftHalfModel)
+{
+  const auto dir = mmrep::testing::ScratchDir("MeshConvert");
+  const fs::path atlas = fs::path(MMREP_SOURCE_DIR) / "Resources/Atlas/FaceAtlas.vtu";
+  const auto half = dir / "half.vtu", inp = dir / "half.inp";
+  for (const auto& out : {half, inp})
+  {
+    const auto result = mmrep::testing::Run(std::string("'") + MESHCONVERT_EXECUTABLE + "' --half " + Quote(atlas) + " " + Quote(out), dir);
+    ASSERT_EQ(result.status, 0) << result.err;
+  }
+  mmrep::testing::ExpectSameMesh(mmrep::LeftHalfModel(mmrep::ReadFEMesh(atlas.string())), mmrep::ReadFEMesh(half.string()));
+  EXPECT_NE(ReadText(inp).find("*TRANSFORM, NSET=symmetryBoundary, TYPE=R"), std::string::npos);
+
+  const auto again = dir / "again.vtu";
+  const auto result = mmrep::testing::Run(std::string("'") + MESHCONVERT_EXECUTABLE + "' --half " + Quote(half) + " " + Quote(again), dir);
+  EXPECT_NE(result.status, 0);
+  EXPECT_EQ(LineCount(result.err), 1u) << result.err;
+  EXPECT_NE(result.err.find("already is a half model"), std::string::npos) << result.err;
+  EXPECT_FALSE(fs::exists(again));
 }
