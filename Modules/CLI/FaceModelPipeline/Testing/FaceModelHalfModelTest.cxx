@@ -40,7 +40,7 @@ TEST(FaceModelPipelineModule, HalfModelOfTheSpeakerSimulatesTheSymmetricSmileLik
   ScratchDirectory dir("halfmodel");
   const fs::path out = dir.path() / "speaker";
   const ModuleRun pipeline = RunModuleExecutable(
-    "FaceModelPipeline", {kCT, kPoints, "--outputDirectory", out.string(), "--noPictures", "--tieWeight", "0.05", "--halfModel"});
+    "FaceModelPipeline", {kCT, kPoints, "--outputDirectory", out.string(), "--noPictures", "--halfModel"});
   ASSERT_EQ(pipeline.exitCode, 0) << pipeline.err;
   for (const char* f : {"half-model.vtu", "half-model.inp", "half-model.feb", "half-model.msh"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
