@@ -1,12 +1,11 @@
 #include "mmrepHalfModel.h"
 
+#include "mmrepElementLocation.h"
+
 #include <Eigen/Geometry>
 
-#include <vtkHexahedron.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
-#include <vtkTetra.h>
-#include <vtkWedge.h>
 
 #include <algorithm>
 #include <array>
@@ -25,28 +24,6 @@ enum class Side : std::int8_t
   Plane = 0,
   Left = 1
 };
-
-// Parametric coordinates of `p` in a solid element (VTK convention) and its distance to it.
-double Locate(const FEMesh& mesh, const Element& e, const Point3& p, std::array<double, 3>& pcoords)
-{
-  vtkNew<vtkHexahedron> hex;
-  vtkNew<vtkWedge> wedge;
-  vtkNew<vtkTetra> tet;
-  vtkCell* cell = e.type == ElementType::Hexahedron ? static_cast<vtkCell*>(hex.Get())
-                  : e.type == ElementType::Wedge    ? static_cast<vtkCell*>(wedge.Get())
-                                                    : static_cast<vtkCell*>(tet.Get());
-  for (int k = 0; k < NodeCount(e.type); ++k)
-  {
-    cell->GetPoints()->SetPoint(k, mesh.nodes[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])].data());
-    cell->GetPointIds()->SetId(k, k);
-  }
-  double x[3] = {p.x(), p.y(), p.z()}, closest[3], dist2 = 0, weights[8];
-  int subId = 0;
-  const int status = cell->EvaluatePosition(x, closest, subId, pcoords.data(), dist2, weights);
-  if (status < 0)
-    return std::numeric_limits<double>::infinity();
-  return status == 1 ? 0.0 : std::sqrt(dist2);
-}
 
 std::vector<std::int32_t> Restrict(const std::vector<std::int32_t>& ids, const std::vector<std::int32_t>& newIndex)
 {
@@ -281,12 +258,12 @@ FEMesh LeftHalfModel(const FEMesh& full, const HalfModelOptions& options)
         {
           if (half.elements[e].type == ElementType::Cable)
             continue;
-          std::array<double, 3> pcoords{};
-          const double d = Locate(half, half.elements[e], full.nodes[n], pcoords);
+          const ElementLocation hit = LocateInElement(half, half.elements[e], full.nodes[n]);
+          const double d = hit.distance;
           if (d < best)
           {
             best = d;
-            emb = {static_cast<std::int32_t>(e), pcoords};
+            emb = {static_cast<std::int32_t>(e), hit.pcoords};
           }
           if (d == 0)
             break;

@@ -1,13 +1,12 @@
 // Muscle activation: runs the deck through ccx and maps the results back onto the model.
 #include "mmrepMuscleActivation.h"
 
+#include "mmrepElementLocation.h"
+
 #include <Eigen/Geometry>
 
-#include <vtkHexahedron.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
-#include <vtkTetra.h>
-#include <vtkWedge.h>
 
 #include <cmath>
 #include <limits>
@@ -16,51 +15,6 @@
 
 namespace mmrep::simulation
 {
-namespace
-{
-// Inverse isoparametric map of one solid element: inside flag, squared distance, weights.
-struct CellHit
-{
-  bool inside = false;
-  double dist2 = std::numeric_limits<double>::infinity();
-  std::vector<double> weights;
-};
-
-CellHit Locate(const FEMesh& mesh, const Element& e, const Point3& p)
-{
-  vtkNew<vtkHexahedron> hex;
-  vtkNew<vtkWedge> wedge;
-  vtkNew<vtkTetra> tet;
-  vtkCell* cell = e.type == ElementType::Hexahedron ? static_cast<vtkCell*>(hex.Get())
-                  : e.type == ElementType::Wedge    ? static_cast<vtkCell*>(wedge.Get())
-                                                    : static_cast<vtkCell*>(tet.Get());
-  const int n = NodeCount(e.type);
-  for (int k = 0; k < n; ++k)
-  {
-    const Point3& q = mesh.nodes[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])];
-    cell->GetPoints()->SetPoint(k, q.data());
-    cell->GetPointIds()->SetId(k, k);
-  }
-  double x[3] = {p.x(), p.y(), p.z()}, closest[3], pcoords[3], dist2 = 0;
-  int subId = 0;
-  CellHit hit;
-  hit.weights.resize(static_cast<std::size_t>(n));
-  const int status = cell->EvaluatePosition(x, closest, subId, pcoords, dist2, hit.weights.data());
-  if (status < 0)
-    return CellHit();
-  hit.inside = status == 1;
-  hit.dist2 = hit.inside ? 0 : dist2;
-  if (!hit.inside)
-  {
-    // Weights of the closest point, not of the (extrapolated) outside point.
-    double cp[3], cw[8];
-    cell->EvaluatePosition(closest, cp, subId, pcoords, dist2, cw);
-    hit.weights.assign(cw, cw + n);
-  }
-  return hit;
-}
-} // namespace
-
 LandmarkMotion InterpolateDisplacement(const FEMesh& mesh, const std::vector<Point3>& displacements,
                                        const Point3& point, double tolerance)
 {
@@ -78,8 +32,8 @@ LandmarkMotion InterpolateDisplacement(const FEMesh& mesh, const std::vector<Poi
       box.extend(mesh.nodes[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])]);
     if (box.exteriorDistance(point) > std::min(best.distance, tolerance))
       continue;
-    const CellHit hit = Locate(mesh, e, point);
-    const double d = std::sqrt(hit.dist2);
+    const ElementLocation hit = LocateInElement(mesh, e, point);
+    const double d = hit.distance;
     if (d < best.distance)
     {
       best.distance = d;
