@@ -384,6 +384,8 @@ public:
     if (!(slidingWeight_ > 0) && !(holdingWeight_ > 0))
       return;
     levelStart_ = problem_.points;
+    if (!(slidingWeight_ > 0))
+      return; // the holding term needs no normals
     levelNormal_.assign(problem_.points.size(), Eigen::Vector3d::Zero());
     for (std::size_t k = 0; k < problem_.points.size(); ++k)
     {

@@ -13,7 +13,8 @@
 // once (as FaceModelPipeline makes them) and shared by the modes.
 //
 //   CorrespondenceBenchmark [--quick] [--modes half-face,averaged,full] [--synthetic N]
-//                           [--sliding MU] [--slidingLevel L] [--levels N]
+//                           [--sliding MU] [--slidingLevel L] [--levels N] [--holding MU] [--qHolding MU]
+//                           [--qSliding MU] [--qCells N] [--only self|synthetic|headsq] [--rOnly]
 #include "mmrepCorrespondenceMetrics.h"
 
 #include "mmrepAtlasRegistration.h"
@@ -29,7 +30,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -171,7 +171,7 @@ int main(int argc, char* argv[])
 {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
   vtkSMPTools::SetBackend("Sequential"); // the plane's ICP gives the same bytes on every run
-  bool quick = false;
+  bool quick = false, registrationOnly = false;
   std::string only; // run only the subjects of this kind (self, synthetic, headsq)
   int syntheticCount = 6;
   std::vector<Mode> modes = {{"half-face", true, true}, {"averaged", true, false}, {"full", false, false}};
@@ -186,6 +186,8 @@ int main(int argc, char* argv[])
     };
     if (a == "--quick")
       quick = true;
+    else if (a == "--rOnly")
+      registrationOnly = true; // also a row per mode for R alone (before Q)
     else if (a == "--only")
       only = next();
     else if (a == "--synthetic")
@@ -217,7 +219,8 @@ int main(int argc, char* argv[])
     else
     {
       std::fprintf(stderr, "usage: CorrespondenceBenchmark [--quick] [--modes half-face,averaged,full] [--synthetic N] "
-                           "[--sliding MU] [--slidingLevel L] [--levels N]\n");
+                           "[--sliding MU] [--slidingLevel L] [--levels N] [--holding MU] [--qHolding MU] [--qSliding MU] [--qCells N] "
+                           "[--only KIND] [--rOnly]\n");
       return 2;
     }
   }
@@ -401,7 +404,7 @@ int main(int argc, char* argv[])
           measure("similarity (" + mode.name + ")", sim, nullptr, nullptr);
           similarityDone = true;
         }
-        if (std::getenv("MMREP_BENCH_R_ONLY"))
+        if (registrationOnly)
           measure(mode.name + " (R only)", run.registered, &run.registered, run.seconds);
         measure(mode.name, run.refined, &run.registered, run.seconds);
         if (!subjectHeldOut.empty())
