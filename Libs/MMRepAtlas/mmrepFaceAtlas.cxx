@@ -1,5 +1,7 @@
 #include "mmrepFaceAtlas.h"
 
+#include "mmrepFaceMouth.h"
+
 #include "mmrepFaceMuscles.h"
 #include "mmrepMeshRepair.h"
 #include "mmrepMeshQuality.h"
@@ -546,6 +548,13 @@ FaceAtlas BuildFaceAtlas(vtkPolyData* skinWorld, vtkPolyData* skullWorld, const 
     atlas.log.push_back(Format("%.0f mid-sagittal inner nodes farther than 0.1 mm from the bone moved from set skull to inner",
                                demoted));
   }
+
+  // --- Mouth slit and jaw (mmrepFaceMouth.h).
+  const MouthSlitCells slit = MouthSlitCellsOf(grid, lm);
+  const std::size_t twins = CutMouthSlit(mesh, grid, slit);
+  atlas.log.push_back(Format("mouth slit: row %.0f, corner column %.0f, %.0f nodes doubled", slit.slitRow, slit.cornerColumn,
+                             static_cast<double>(twins)));
+  atlas.log.push_back(AddJaw(mesh, skullLocal, frame, lm));
 
   // --- Landmarks (world), muscles.
   const FacePoint* points[] = {&lm.eyeInner, &lm.eyeOuter, &lm.lipCorner, &lm.upperLip, &lm.lowerLip};

@@ -3,6 +3,7 @@
 // element index + 1 (solids and cables share one numbering, as Abaqus requires). A half model
 // ends with its symmetry condition (local system on the plane nodes, normal DOF fixed).
 #include "mmrepFEExport.h"
+#include "mmrepLipContact.h"
 #include "mmrepHalfModel.h"
 
 #include <Eigen/Geometry>
@@ -114,6 +115,22 @@ void WriteAbaqus(const FEMesh& mesh, std::ostream& out)
     WriteSet(out, "NSET", names.muscleNodes[k], "muscle '" + name + "' track nodes", muscle.nodes);
     WriteSet(out, "ELSET", names.muscles[k], "muscle '" + name + "' cables", muscle.cables);
     ++k;
+  }
+
+  // The lips' facing surfaces and their contact pair (frictionless, the linear penalty of the
+  // simulation: 1 N/mm³ of overclosure), so that a solver keeps them from interpenetrating.
+  const auto upperFaces = LipContactFaces(mesh, true), lowerFaces = LipContactFaces(mesh, false);
+  if (!upperFaces.empty() && !lowerFaces.empty())
+  {
+    out << "** lips: the mouth slit's facing surfaces (closed at rest) and their contact pair\n";
+    for (const auto* lip : {&upperFaces, &lowerFaces})
+    {
+      out << "*SURFACE, NAME=" << (lip == &upperFaces ? "S_UPPERLIP" : "S_LOWERLIP") << ", TYPE=ELEMENT\n";
+      for (const auto& f : *lip)
+        out << f.element + 1 << ", S" << f.face << "\n";
+    }
+    out << "*SURFACE INTERACTION, NAME=LIPS\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n1., 1e-9\n";
+    out << "*CONTACT PAIR, INTERACTION=LIPS, TYPE=SURFACE TO SURFACE\nS_LOWERLIP, S_UPPERLIP\n";
   }
 
   // A half model: its plane nodes move within the plane. Local x axis = plane normal (point a of

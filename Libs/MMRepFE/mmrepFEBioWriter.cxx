@@ -3,9 +3,11 @@
 // Parts: one per (tissue layer, solid type), named "<layer set>_<type>" (layer_epidermis_hex8, …),
 // and one part "ECABLE" of line2 elements for all muscle cables. Ids are 1-based: node id = node
 // index + 1, element id = element index + 1 across all parts. A half model adds its plane faces as a
-// <Surface> and a "symmetry plane" constraint on it.
+// <Surface> and a "symmetry plane" constraint on it; a model with a mouth slit adds the lips' facing
+// surfaces, their <SurfacePair> and a frictionless sliding-elastic <Contact>.
 #include "mmrepFEExport.h"
 #include "mmrepHalfModel.h"
+#include "mmrepLipContact.h"
 
 namespace mmrep::detail
 {
@@ -136,7 +138,33 @@ void WriteFEBio(const FEMesh& mesh, std::ostream& out)
     }
     out << "    </Surface>\n";
   }
+  // The lips' facing surfaces as a surface pair for a sliding contact (FEBio: primary = upper lip).
+  const auto upperFaces = LipContactFaces(mesh, true), lowerFaces = LipContactFaces(mesh, false);
+  const bool lips = !upperFaces.empty() && !lowerFaces.empty();
+  std::string upperName, lowerName;
+  if (lips)
+  {
+    upperName = partNames.Add("upperLipContactFaces");
+    lowerName = partNames.Add("lowerLipContactFaces");
+    for (const auto* lip : {&upperFaces, &lowerFaces})
+    {
+      out << "    <Surface name=\"" << (lip == &upperFaces ? upperName : lowerName) << "\">\n";
+      int id = 0;
+      for (const auto& f : *lip)
+        out << "      <quad4 id=\"" << ++id << "\">" << f.nodes[0] + 1 << "," << f.nodes[1] + 1 << "," << f.nodes[2] + 1
+            << "," << f.nodes[3] + 1 << "</quad4>\n";
+      out << "    </Surface>\n";
+    }
+    out << "    <SurfacePair name=\"lips\">\n      <primary>" << upperName << "</primary>\n      <secondary>" << lowerName
+        << "</secondary>\n    </SurfacePair>\n";
+  }
   out << "  </Mesh>\n";
+  if (lips)
+  {
+    out << "  <Contact>\n    <contact type=\"sliding-elastic\" surface_pair=\"lips\">\n"
+        << "      <penalty>1</penalty>\n      <auto_penalty>1</auto_penalty>\n      <two_pass>1</two_pass>\n"
+        << "      <laugon>0</laugon>\n      <fric_coeff>0</fric_coeff>\n    </contact>\n  </Contact>\n";
+  }
   if (!symmetrySurface.empty())
   {
     out << "  <Constraints>\n";

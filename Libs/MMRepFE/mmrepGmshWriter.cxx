@@ -3,9 +3,11 @@
 // combination of solids, a curve per (muscles, element sets) combination of cables, and a point
 // entity per combination of node sets holding point elements (type 15) for those nodes.
 // Physical groups: dim 3 "layer_<layer>" and element sets (solid part), dim 1 "muscle_<name>" and
-// element sets (cable part), dim 0 node sets. Empty groups are omitted (Gmsh cannot store them).
+// element sets (cable part), dim 0 node sets, dim 2 the lips' facing surfaces (quadrangles, tags
+// after the elements'). Empty groups are omitted (Gmsh cannot store them).
 // Node tag = node index + 1, element tag = element index + 1; point elements follow.
 #include "mmrepFEExport.h"
+#include "mmrepLipContact.h"
 
 #include <Eigen/Core>
 
@@ -137,6 +139,28 @@ void WriteGmsh(const FEMesh& mesh, std::ostream& out)
         entity.lo = entity.hi = mesh.nodes[i];
       entity.members.push_back(static_cast<std::int32_t>(i));
     }
+  // The lips' facing surfaces (mmrepLipContact.h): one surface entity and physical group each, of
+  // quadrangles (type 3) numbered after the elements, so that a solver can pair them for contact.
+  std::vector<LipContactFace> faces;
+  for (const bool upper : {true, false})
+  {
+    const auto lip = LipContactFaces(mesh, upper);
+    if (lip.empty())
+      continue;
+    const int tag = static_cast<int>(groups.size()) + 1;
+    groups.push_back({2, tag, upper ? "upperLipContactFaces" : "lowerLipContactFaces"});
+    Entity& entity = entityFor(2, {tag});
+    for (const auto& f : lip)
+    {
+      entity.members.push_back(static_cast<std::int32_t>(faces.size()));
+      faces.push_back(f);
+      for (auto n : f.nodes)
+      {
+        entity.lo = entity.lo.cwiseMin(mesh.nodes[static_cast<std::size_t>(n)]);
+        entity.hi = entity.hi.cwiseMax(mesh.nodes[static_cast<std::size_t>(n)]);
+      }
+    }
+  }
   std::stable_sort(entities.begin(), entities.end(),
                    [](const Entity& a, const Entity& b) { return a.dim < b.dim; });
 
@@ -197,9 +221,9 @@ void WriteGmsh(const FEMesh& mesh, std::ostream& out)
   std::size_t total = 0;
   for (const auto& e : entities)
   {
-    if (e.dim == 0)
+    if (e.dim == 0 || e.dim == 2)
     {
-      blocks.push_back({&e, 15, e.members});
+      blocks.push_back({&e, e.dim == 0 ? 15 : 3, e.members});
       total += e.members.size();
       continue;
     }
@@ -217,7 +241,7 @@ void WriteGmsh(const FEMesh& mesh, std::ostream& out)
     }
   }
   out << "$Elements\n" << blocks.size() << " " << total << " 1 " << total << "\n";
-  std::size_t pointTag = elementCount;
+  std::size_t pointTag = elementCount + faces.size();
   for (const auto& block : blocks)
   {
     out << block.entity->dim << " " << block.entity->tag << " " << block.type << " " << block.members.size() << "\n";
@@ -226,6 +250,15 @@ void WriteGmsh(const FEMesh& mesh, std::ostream& out)
       if (block.type == 15)
       {
         out << ++pointTag << " " << i + 1 << "\n";
+        continue;
+      }
+      if (block.type == 3)
+      {
+        const auto& f = faces[static_cast<std::size_t>(i)];
+        out << elementCount + static_cast<std::size_t>(i) + 1;
+        for (auto n : f.nodes)
+          out << " " << n + 1;
+        out << "\n";
         continue;
       }
       out << i + 1;

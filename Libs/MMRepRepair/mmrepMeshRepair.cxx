@@ -11,6 +11,8 @@
 // the threshold; each phase first moves inner nodes only, then also surface nodes.
 #include "mmrepMeshRepair.h"
 
+#include "mmrepLipContact.h"
+
 #include "mmrepMeshQuality.h"
 #include "mmrepSurfaceProjector.h"
 
@@ -837,7 +839,10 @@ RepairReport RepairMesh(FEMesh& mesh, const RepairOptions& options)
   quality::QualitySummary after = before;
   if (before.belowThreshold > 0 || before.inverted > 0) // a valid mesh is left untouched
   {
+    // The lips move node by node here: close the mouth slit so that they stay together.
+    const ClosedMouth closed = CloseMouth(mesh);
     Repairer(mesh, options).Run(report);
+    ReopenMouth(mesh, closed);
     after = quality::SummarizeScaledJacobian(mesh, threshold, sequential);
   }
   report.minScaledJacobianAfter = after.min;

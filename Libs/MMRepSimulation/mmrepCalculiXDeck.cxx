@@ -3,6 +3,8 @@
 
 #include "mmrepFEExport.h"
 #include "mmrepHalfModel.h"
+#include "mmrepJaw.h"
+#include "mmrepLipContact.h"
 
 #include <Eigen/Geometry>
 
@@ -13,6 +15,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <limits>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -89,8 +93,10 @@ std::vector<std::string> MuscleNames(const FEMesh& mesh)
   return names;
 }
 
-void CheckActivations(const FEMesh& mesh, const std::vector<MuscleActivation>& activations)
+void CheckActivations(const FEMesh& mesh, const std::vector<MuscleActivation>& activations, bool requireActive)
 {
+  if (activations.empty() && !requireActive)
+    return;
   if (mesh.muscles.empty())
     throw std::invalid_argument("the model has no muscles (no muscle tracks stored in the mesh)");
   if (activations.empty())
@@ -116,7 +122,7 @@ void CheckActivations(const FEMesh& mesh, const std::vector<MuscleActivation>& a
       throw std::invalid_argument("muscle '" + a.muscle + "' has no cable elements");
     anyActive = anyActive || a.level > 0;
   }
-  if (!anyActive)
+  if (!anyActive && requireActive)
     throw std::invalid_argument("every activation level is 0: nothing to simulate");
 }
 
@@ -211,7 +217,7 @@ std::vector<SlidingNode> LipSupportNodes(const FEMesh& mesh, double margin)
 
 DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, std::ostream& out)
 {
-  CheckActivations(mesh, options.activations);
+  CheckActivations(mesh, options.activations, options.jawAngle == 0);
   const std::string& hexType = options.hexahedronType;
   if (hexType != "C3D8" && hexType != "C3D8I" && hexType != "C3D8R")
     throw std::invalid_argument("hexahedron type '" + hexType + "' must be C3D8, C3D8I or C3D8R");
@@ -231,13 +237,28 @@ DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, st
         used[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])] = 1;
 
   // Fixed nodes: those of the set that carry a solid (a node without a solid has no stiffness).
-  const auto fixedIt = mesh.nodeSets.find(options.fixedNodeSet);
+  // A model with a jaw: the maxilla is fixed and the mandible moves with the jaw.
+  const bool jaw = HasJaw(mesh) && options.fixedNodeSet == "skull";
+  if (!(options.jawAngle >= kMinJawAngle && options.jawAngle <= kMaxJawAngle))
+    throw std::invalid_argument("jaw angle " + FormatDouble(options.jawAngle) + " deg is outside [" +
+                                FormatDouble(kMinJawAngle) + ", " + FormatDouble(kMaxJawAngle) + "] deg");
+  if (options.jawAngle != 0 && !jaw)
+    throw std::invalid_argument("a jaw opening needs a model with a jaw (node sets 'maxilla', 'mandible' and 'jawAxis'); "
+                                "this one has none: rebuild it from the current atlas");
+  if (!(options.contactStiffness > 0))
+    throw std::invalid_argument("the lip contact stiffness must be positive");
+  const auto fixedIt = mesh.nodeSets.find(jaw ? kMaxillaSet : options.fixedNodeSet);
   if (fixedIt == mesh.nodeSets.end())
     throw std::invalid_argument("the model has no node set '" + options.fixedNodeSet + "' to fix");
   std::vector<std::int32_t> fixed;
   for (auto n : fixedIt->second)
     if (used[static_cast<std::size_t>(n)])
       fixed.push_back(n);
+  std::vector<std::int32_t> mandible; // solid nodes moved by the jaw
+  if (jaw)
+    for (auto n : mesh.nodeSets.at(kMandibleSet))
+      if (used[static_cast<std::size_t>(n)])
+        (options.jawAngle == 0 ? fixed : mandible).push_back(n);
   std::sort(fixed.begin(), fixed.end());
   fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
   if (fixed.empty())
@@ -389,11 +410,29 @@ DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, st
       constrained.push_back(node);
     it->second.push_back(normal.normalized());
   };
+  for (auto n : mandible)
+    isFixed[static_cast<std::size_t>(n)] = 1;
+  // With the jaw open, a lip-support node whose nearest bone node is on the mandible has lost its support.
+  auto onMandibleSide = [&](std::int32_t node) {
+    if (mandible.empty())
+      return false;
+    const Point3& p = mesh.nodes[static_cast<std::size_t>(node)];
+    double best = std::numeric_limits<double>::infinity();
+    bool lower = false;
+    for (const auto* set : {&mesh.nodeSets.at(kMaxillaSet), &mesh.nodeSets.at(kMandibleSet)})
+      for (auto b : *set)
+        if (const double d = (mesh.nodes[static_cast<std::size_t>(b)] - p).squaredNorm(); d < best)
+        {
+          best = d;
+          lower = set == &mesh.nodeSets.at(kMandibleSet);
+        }
+    return lower;
+  };
   for (const auto& s : options.slidingNodes)
   {
     if (s.node < 0 || static_cast<std::size_t>(s.node) >= mesh.nodes.size() || !solidNode[static_cast<std::size_t>(s.node)])
       throw std::invalid_argument("sliding node " + std::to_string(s.node) + " is not a node of a solid element");
-    if (isFixed[static_cast<std::size_t>(s.node)])
+    if (isFixed[static_cast<std::size_t>(s.node)] || onMandibleSide(s.node))
       continue;
     addNormal(s.node, s.normal);
     ++summary.slidingNodes;
@@ -448,11 +487,67 @@ DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, st
   out << "*NSET, NSET=FIXED\n";
   WriteIds(out, fixed);
   out << "*BOUNDARY\nFIXED, 1, 3\n";
+
+  // The lips: lower-lip contact nodes (slave) against the upper lip's facing faces (master).
+  if (options.lipContact && HasMouthSlit(mesh))
+  {
+    const auto faces = LipContactFaces(mesh, true);
+    const auto& upper = mesh.nodeSets.at(kUpperLipContactSet);
+    // Slaves: the lower lip's own facing nodes, but not those next to a corner line: there the slit
+    // closes, the gap stays within the contact search distance and the contact state chatters.
+    std::vector<char> nearCorner(mesh.nodes.size(), 0);
+    for (const auto& f : LipContactFaces(mesh, false))
+      if (std::any_of(f.nodes.begin(), f.nodes.end(), [&](std::int32_t n) { return std::binary_search(upper.begin(), upper.end(), n); }))
+        for (auto n : f.nodes)
+          nearCorner[static_cast<std::size_t>(n)] = 1;
+    std::vector<std::int32_t> slaves;
+    for (auto n : mesh.nodeSets.at(kLowerLipContactSet))
+      if (used[static_cast<std::size_t>(n)] && !nearCorner[static_cast<std::size_t>(n)])
+        slaves.push_back(n);
+    if (!faces.empty() && !slaves.empty())
+    {
+      out << "** lips: the lower lip's facing nodes may not enter the upper lip (frictionless, linear penalty)\n";
+      out << "*SURFACE, NAME=UPPERLIPCONTACT, TYPE=ELEMENT\n";
+      for (const auto& f : faces)
+        out << f.element + 1 << ", S" << f.face << "\n";
+      if (std::getenv("MMREP_S2S"))
+      {
+        out << "*SURFACE, NAME=LOWERLIPCONTACT, TYPE=ELEMENT\n";
+        for (const auto& f : LipContactFaces(mesh, false))
+          out << f.element + 1 << ", S" << f.face << "\n";
+      }
+      else
+      {
+      out << "*NSET, NSET=LOWERLIPCONTACT\n";
+      WriteIds(out, slaves);
+      out << "*SURFACE, NAME=LOWERLIPCONTACT, TYPE=NODE\nLOWERLIPCONTACT\n";
+      }
+      out << "*SURFACE INTERACTION, NAME=LIPS\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n"
+          << FormatDouble(options.contactStiffness) << ", 1e-5\n"; // σ∞: 10 Pa of tension far apart
+      out << "*CONTACT PAIR, INTERACTION=LIPS, TYPE=" << (std::getenv("MMREP_S2S") ? "SURFACE TO SURFACE" : "NODE TO SURFACE") << "\nLOWERLIPCONTACT, UPPERLIPCONTACT\n";
+      summary.contactNodes = slaves.size();
+      summary.contactFaces = faces.size();
+    }
+  }
   // The load parameter ("temperature") starts at 0 and is ramped to 1 during the static step.
   out << "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nNALL, 0.\n";
   out << "*STEP, NLGEOM, INC=" << step.maxIncrements << "\n*STATIC\n"
       << FormatDouble(step.initialIncrement) << ", 1., " << FormatDouble(step.minIncrement) << ", "
       << FormatDouble(step.maxIncrement) << "\n";
+  if (!mandible.empty())
+  {
+    // The mandible's rigid rotation, ramped with the step (exact at its end).
+    const Eigen::Isometry3d rotation = JawRotation(mesh, options.jawAngle);
+    out << "** jaw opening " << FormatDouble(options.jawAngle) << " deg about the condylar axis\n*BOUNDARY\n";
+    for (auto n : mandible)
+    {
+      const Point3& p = mesh.nodes[static_cast<std::size_t>(n)];
+      const Point3 u = rotation * p - p;
+      for (int d = 0; d < 3; ++d)
+        out << n + 1 << ", " << d + 1 << ", " << d + 1 << ", " << FormatDouble(u[d]) << "\n";
+    }
+    summary.jawNodes = mandible.size();
+  }
   out << "*TEMPERATURE\nNALL, 1.\n*NODE FILE\nU\n*END STEP\n";
   return summary;
 }

@@ -13,7 +13,9 @@
 //     0 → 1 over the step (no thermal expansion anywhere), so the activation grows gradually;
 //   * embedding: every muscle node follows its solid element, u_m − Σ N_i(pcoords) u_i = 0 (three
 //     *EQUATION per node, the element's own shape functions, so it is exact for any deformation);
-//   * fixed nodes (node set "skull" by default): *BOUNDARY 1–3;
+//   * fixed nodes (node set "skull" by default; `maxilla` on a model with a jaw): *BOUNDARY 1–3;
+//   * a jaw opening: the `mandible` nodes' rigid rotation as prescribed displacements (mmrepJaw.h);
+//   * lips: *CONTACT PAIR (node to surface, linear penalty) between the facing surfaces of the slit;
 //   * sliding nodes (optional, e.g. the lips' inner surface on the teeth): n·u = 0 by *EQUATION;
 //   * a half model (mmrepHalfModel.h): its symmetry boundary's solid nodes keep n·u = 0, n the
 //     refitted plane's normal, by *EQUATION too (a node that also slides gets both constraints);
@@ -97,12 +99,22 @@ struct DeckOptions
   std::vector<SlidingNode> slidingNodes; // e.g. LipSupportNodes(mesh); fixed nodes among them are skipped
   bool symmetry = true; // a half model: its symmetry boundary's nodes move within the plane
   StepControl step;
+  // Jaw opening (degrees, mmrepJaw.h): on a model with a jaw the `maxilla` nodes are fixed and the
+  // `mandible` nodes rotate rigidly about the condylar axis (prescribed displacements, ramped over
+  // the step); the lip-support nodes nearest the mandible are then left free (their support, the
+  // lower teeth, moves away with it). Without a jaw the angle must be 0 and `fixedNodeSet` is fixed.
+  double jawAngle = 0;
+  // The lips' facing surfaces (mmrepLipContact.h) as a frictionless contact pair: lower-lip nodes
+  // against the upper lip's faces, linear penalty `contactStiffness` (N/mm³ of overclosure).
+  bool lipContact = true;
+  double contactStiffness = 1.0;
 };
 
 // What the deck contains (for reports and tests).
 struct DeckSummary
 {
   std::size_t solids = 0, springs = 0, equations = 0, fixedNodes = 0, slidingNodes = 0, symmetryNodes = 0;
+  std::size_t jawNodes = 0, contactNodes = 0, contactFaces = 0; // mandible nodes moved; lip contact pair
   std::vector<std::string> activeMuscles; // muscles written as springs, in activation order
 };
 
@@ -112,7 +124,8 @@ std::vector<std::string> MuscleNames(const FEMesh& mesh);
 // Throws std::invalid_argument with one line when the mesh has no muscles, a muscle name is unknown
 // (the message lists the valid names; on a half model a right-side "_R" muscle says so), a level is outside [0, 1], a muscle is named twice, or no
 // muscle has a positive level.
-void CheckActivations(const FEMesh& mesh, const std::vector<MuscleActivation>& activations);
+// With `requireActive` false (a jaw opening alone), no muscle or only zero levels are accepted.
+void CheckActivations(const FEMesh& mesh, const std::vector<MuscleActivation>& activations, bool requireActive = true);
 
 // Writes the deck. Node id = node index + 1; element id = element index + 1. Only the cables of
 // muscles with a positive level are written (inactive cables are slack and carry nothing), with

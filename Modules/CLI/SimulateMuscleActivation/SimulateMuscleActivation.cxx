@@ -2,6 +2,10 @@
 // model (.vtu with the displacement), before/after pictures, landmark displacements.
 #include "mmrepCLI.h"
 #include "mmrepFEMeshIO.h"
+#include "mmrepGesture.h"
+#include "mmrepJaw.h"
+#include "mmrepLipContact.h"
+#include "mmrepMouthMeasures.h"
 #include "mmrepMuscleActivation.h"
 #include "mmrepSnapshot.h"
 
@@ -139,8 +143,8 @@ void WritePictures(const FEMesh& mesh, const sim::ActivationResult& result, doub
     newMarks.push_back(m.rest + m.displacement);
   }
   const auto restPts = PointCloud(restMarks), newPts = PointCloud(newMarks);
-  // Motion lines from rest to rest + m·u at the skin nodes that move noticeably (m: longest line 10 mm).
-  const double magnify = std::max(1.0, std::round(10 / std::max(maxDisplacement, 1e-6)));
+  // Motion lines from rest to rest + u (true scale) at the skin nodes that move noticeably.
+  const double magnify = 1.0;
   vtkNew<vtkPoints> linePoints;
   vtkNew<vtkCellArray> lines;
   if (const auto it = mesh.nodeSets.find("skin"); it != mesh.nodeSets.end())
@@ -177,7 +181,8 @@ void WritePictures(const FEMesh& mesh, const sim::ActivationResult& result, doub
   arrows.lineWidth = 2;
   const std::vector<SnapshotLayer> layers{after, before, arrows, marksBefore, marksAfter};
   char caption[160];
-  std::snprintf(caption, sizeof caption, "%s: |u| colour, rest = white mesh, lines = u x%g", title.c_str(), magnify);
+  std::snprintf(caption, sizeof caption, "%s: deformed (|u| colour) over rest (white mesh), true scale; lines = u",
+                title.c_str());
   const std::string fullTitle = caption;
 
   if (!picture.empty())
@@ -264,15 +269,45 @@ MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
     }
     if (mesh.muscles.empty())
       throw cli::ModuleError("input model '" + input + "' has no muscles: a speaker model with muscle tracks is needed");
-    const std::vector<std::string> names = ctx.args.Strings("muscles");
-    if (names.empty())
-      throw cli::ModuleError("no muscle given (--muscles); the model's muscles are: " + JoinNames(sim::MuscleNames(mesh)));
+    std::vector<std::string> names = ctx.args.Strings("muscles");
     std::vector<double> levels = ctx.args.Doubles("activations");
+    sim::Gesture gesture;
+    if (ctx.args.Has("gesture"))
+    {
+      if (!names.empty())
+        throw cli::ModuleError("give either --gesture or --muscles, not both");
+      const std::string g = ctx.args.String("gesture");
+      try
+      {
+        gesture = cli::FileExtension(g) == ".json" ? sim::ReadGestureFile(g) : sim::BuiltInGesture(g, mesh);
+      }
+      catch (const std::exception& e)
+      {
+        throw cli::ModuleError(std::string(e.what()) + (cli::FileExtension(g) == ".json" ? "" : " (or a gesture file .json)"));
+      }
+      names.clear();
+      levels.clear();
+      for (const auto& a : gesture.activations)
+      {
+        names.push_back(a.muscle);
+        levels.push_back(a.level);
+      }
+    }
+    const double jawAngle = ctx.args.Has("jawAngle") ? ctx.args.Double("jawAngle") : gesture.jawAngle;
+    if (names.empty() && jawAngle == 0)
+      throw cli::ModuleError("no muscle given (--muscles or --gesture " + sim::GestureNames() +
+                             ") and no jaw opening; the model's muscles are: " + JoinNames(sim::MuscleNames(mesh)));
     if (levels.size() == 1)
       levels.assign(names.size(), levels.front());
     if (levels.size() != names.size())
       throw cli::ModuleError("--activations has " + std::to_string(levels.size()) + " values for " +
                              std::to_string(names.size()) + " muscles (give one, or one per muscle)");
+    if (jawAngle != 0 && !HasJaw(mesh))
+      throw cli::ModuleError("input model '" + input + "' has no jaw (node sets maxilla, mandible, jawAxis): a jaw "
+                             "opening needs a model built from the current atlas");
+    if (ctx.args.Has("gesture") && !HasMouthSlit(mesh))
+      throw cli::ModuleError("input model '" + input + "' has no mouth slit (sets upperLip, lowerLip, upperLipContact, "
+                             "lowerLipContact): gestures need a model built from the current atlas");
     const std::vector<double> scale = ctx.args.Doubles("layerScale");
     if (scale.size() != 3 || !std::all_of(scale.begin(), scale.end(), [](double s) { return s > 0; }))
       throw cli::ModuleError("--layerScale needs three positive factors (epidermis, dermis, hypodermis)");
@@ -305,7 +340,9 @@ MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
       options.deck.step.maxIncrements = static_cast<int>(ctx.args.Int("maxIncrements"));
       options.deck.step.initialIncrement = ctx.args.Double("initialIncrement");
       options.deck.step.minIncrement = std::min(options.deck.step.minIncrement, options.deck.step.initialIncrement);
-      sim::CheckActivations(mesh, options.deck.activations);
+      options.deck.jawAngle = jawAngle;
+      options.deck.lipContact = !ctx.args.Bool("noLipContact");
+      sim::CheckActivations(mesh, options.deck.activations, jawAngle == 0);
       if (ctx.args.Bool("lipSupport"))
         options.deck.slidingNodes = sim::LipSupportNodes(mesh);
       options.run.executable = ctx.args.Has("ccx") ? ctx.args.String("ccx") : "";
@@ -362,6 +399,18 @@ MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
                   m.displacement.z(), m.displacement.norm(),
                   m.element >= 0 ? ("element " + std::to_string(m.element)).c_str() : "nearest node");
     std::printf("largest node displacement %.3f mm\n", maxDisplacement);
+    const sim::MouthMeasures mouth = sim::MeasureMouth(mesh, result);
+    if (jawAngle != 0)
+      std::printf("jaw opened %.1f deg (%zu mandible nodes moved)\n", jawAngle, result.deck.jawNodes);
+    if (mouth.hasCorners)
+      std::printf("mouth width %.2f -> %.2f mm (%+.2f); right corner %+.3f %+.3f %+.3f mm\n", mouth.restWidth, mouth.width,
+                  mouth.width - mouth.restWidth, mouth.rightCorner.x(), mouth.rightCorner.y(), mouth.rightCorner.z());
+    std::printf("protrusion (forward): upper lip %+.3f mm, lower lip %+.3f mm\n", mouth.upperProtrusion, mouth.lowerProtrusion);
+    if (mouth.hasSlit)
+      std::printf("lip aperture: height %.2f mm at the centre, width %.2f mm; lip gap min %+.3f mm, mean %+.3f mm "
+                  "(contact pair: %zu nodes on %zu faces)\n",
+                  mouth.apertureHeight, mouth.apertureWidth, mouth.minimumLipGap, mouth.meanLipGap,
+                  result.deck.contactNodes, result.deck.contactFaces);
     std::fflush(stdout);
 
     WriteDeformedModel(mesh, result, output);
@@ -370,7 +419,8 @@ MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
     {
       try
       {
-        WritePictures(mesh, result, maxDisplacement, picture, lipsPicture, ShortList(result.deck.activeMuscles));
+        WritePictures(mesh, result, maxDisplacement, picture, lipsPicture,
+                      gesture.name.empty() ? ShortList(result.deck.activeMuscles) : gesture.name);
       }
       catch (const cli::ModuleError&)
       {
@@ -392,6 +442,13 @@ MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
     double meanForce = 0;
     for (const auto& m : result.muscles)
       meanForce += m.meanForce / static_cast<double>(result.muscles.size());
+    if (result.muscles.empty())
+      meanForce = 0;
+    ctx.outputs.Set("mouthWidthChange", mouth.width - mouth.restWidth);
+    ctx.outputs.Set("apertureHeight", mouth.apertureHeight);
+    ctx.outputs.Set("upperLipProtrusion", mouth.upperProtrusion);
+    ctx.outputs.Set("lowerLipProtrusion", mouth.lowerProtrusion);
+    ctx.outputs.Set("minimumLipGap", mouth.minimumLipGap);
     ctx.outputs.Set("maxDisplacement", maxDisplacement);
     ctx.outputs.Set("meanMuscleForce", meanForce);
     ctx.outputs.Set("ccxSeconds", result.run.seconds);

@@ -1,0 +1,32 @@
+// The jaw of an FE face model: the bone attachment (node set `skull`) split into `maxilla` (held
+// fixed) and `mandible` (moves rigidly with the jaw), and the jaw's rotation axis through the two
+// condyles, stored as the two nodes of set `jawAxis` (left condyle first). Those two nodes belong to
+// no element: every stage that moves the model's nodes (registration, refinement) carries them, so
+// a speaker's model has the speaker's axis.
+#pragma once
+
+#include "mmrepFEMesh.h"
+
+#include <Eigen/Geometry>
+
+#include <string>
+
+namespace mmrep
+{
+
+inline const std::string kMaxillaSet = "maxilla";
+inline const std::string kMandibleSet = "mandible";
+inline const std::string kJawAxisSet = "jawAxis";
+
+// The range of jaw opening angles the simulation accepts, degrees (negative: clenching past rest).
+constexpr double kMinJawAngle = -5.0, kMaxJawAngle = 30.0;
+
+// True when the model has non-empty `mandible` and `maxilla` sets and a two-node `jawAxis`.
+bool HasJaw(const FEMesh& mesh);
+
+// The rigid motion of the mandible for an opening of `degrees` about the condylar axis; the sense
+// is the one that moves the mandible's nodes away from the maxilla's (the mouth opens for > 0).
+// Throws std::invalid_argument with one line when the model has no jaw (see HasJaw).
+Eigen::Isometry3d JawRotation(const FEMesh& mesh, double degrees);
+
+} // namespace mmrep

@@ -1,0 +1,190 @@
+// Mouth slit: closing and reopening it, its facing surfaces and the gap between them.
+#include "mmrepLipContact.h"
+
+#include <Eigen/Geometry>
+
+#include <vtkCellArray.h>
+#include <vtkGenericCell.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkStaticCellLocator.h>
+#include <vtkStaticPointLocator.h>
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+namespace mmrep
+{
+namespace
+{
+
+const std::vector<std::int32_t>* Set(const FEMesh& mesh, const std::string& name)
+{
+  const auto it = mesh.nodeSets.find(name);
+  return it == mesh.nodeSets.end() || it->second.empty() ? nullptr : &it->second;
+}
+
+const std::vector<std::int32_t>* ElementSet(const FEMesh& mesh, const std::string& name)
+{
+  const auto it = mesh.elementSets.find(name);
+  return it == mesh.elementSets.end() || it->second.empty() ? nullptr : &it->second;
+}
+
+// C3D8 faces S1..S6 in VTK's (= Abaqus') hexahedron node order, counter-clockwise from outside.
+constexpr int kHexFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+
+} // namespace
+
+bool HasMouthSlit(const FEMesh& mesh)
+{
+  return Set(mesh, kUpperLipContactSet) && Set(mesh, kLowerLipContactSet) && ElementSet(mesh, kUpperLipSet) &&
+         ElementSet(mesh, kLowerLipSet);
+}
+
+ClosedMouth CloseMouth(FEMesh& mesh)
+{
+  ClosedMouth closed;
+  if (!HasMouthSlit(mesh))
+    return closed;
+  const auto& upper = *Set(mesh, kUpperLipContactSet);
+  const auto& lower = *Set(mesh, kLowerLipContactSet);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (const auto n : upper)
+    points->InsertNextPoint(mesh.nodes[static_cast<std::size_t>(n)].data());
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(points);
+  vtkNew<vtkStaticPointLocator> locator;
+  locator->SetDataSet(cloud);
+  locator->BuildLocator();
+  std::vector<std::int32_t> partner(mesh.nodes.size(), -1);
+  for (const auto n : lower)
+  {
+    if (std::binary_search(upper.begin(), upper.end(), n))
+      continue; // a corner-line node: shared already
+    const Point3& p = mesh.nodes[static_cast<std::size_t>(n)];
+    const vtkIdType c = locator->FindClosestPoint(p.data());
+    const std::int32_t u = upper[static_cast<std::size_t>(c)];
+    if (c < 0 || (mesh.nodes[static_cast<std::size_t>(u)] - p).norm() > 1e-6)
+      throw std::invalid_argument("mouth slit: lower-lip contact node " + std::to_string(n) +
+                                  " does not coincide with an upper-lip node (the lips are not closed: a deformed model?)");
+    partner[static_cast<std::size_t>(n)] = u;
+    closed.twins.emplace_back(u, n);
+  }
+  for (const auto e : *ElementSet(mesh, kLowerLipSet))
+  {
+    Element& element = mesh.elements[static_cast<std::size_t>(e)];
+    for (int k = 0; k < NodeCount(element.type); ++k)
+    {
+      auto& node = element.nodes[static_cast<std::size_t>(k)];
+      if (const std::int32_t u = partner[static_cast<std::size_t>(node)]; u >= 0)
+      {
+        closed.slots.emplace_back(static_cast<std::size_t>(e), k);
+        node = u;
+      }
+    }
+  }
+  return closed;
+}
+
+void ReopenMouth(FEMesh& mesh, const ClosedMouth& closed)
+{
+  std::vector<std::int32_t> twinOf(mesh.nodes.size(), -1);
+  for (const auto& [u, l] : closed.twins)
+  {
+    mesh.nodes[static_cast<std::size_t>(l)] = mesh.nodes[static_cast<std::size_t>(u)];
+    twinOf[static_cast<std::size_t>(u)] = l;
+  }
+  for (const auto& [e, k] : closed.slots)
+  {
+    auto& node = mesh.elements[e].nodes[static_cast<std::size_t>(k)];
+    node = twinOf[static_cast<std::size_t>(node)];
+  }
+}
+
+std::vector<LipContactFace> LipContactFaces(const FEMesh& mesh, bool upperLip)
+{
+  std::vector<LipContactFace> faces;
+  if (!HasMouthSlit(mesh))
+    return faces;
+  const auto& contact = *Set(mesh, upperLip ? kUpperLipContactSet : kLowerLipContactSet);
+  for (const auto e : *ElementSet(mesh, upperLip ? kUpperLipSet : kLowerLipSet))
+  {
+    const Element& element = mesh.elements[static_cast<std::size_t>(e)];
+    if (element.type != ElementType::Hexahedron)
+      continue;
+    for (int f = 0; f < 6; ++f)
+    {
+      LipContactFace face{e, f + 1, {}};
+      bool all = true;
+      for (int c = 0; c < 4 && all; ++c)
+      {
+        face.nodes[static_cast<std::size_t>(c)] = element.nodes[static_cast<std::size_t>(kHexFaces[f][c])];
+        all = std::binary_search(contact.begin(), contact.end(), face.nodes[static_cast<std::size_t>(c)]);
+      }
+      if (all)
+        faces.push_back(face);
+    }
+  }
+  return faces;
+}
+
+LipGap MeasureLipGap(const FEMesh& mesh, const std::vector<Point3>& displacements)
+{
+  LipGap gap;
+  const auto faces = LipContactFaces(mesh, true);
+  if (faces.empty())
+    return gap;
+  auto at = [&](std::int32_t n) {
+    const auto i = static_cast<std::size_t>(n);
+    return Point3(displacements.empty() ? mesh.nodes[i] : Point3(mesh.nodes[i] + displacements[i]));
+  };
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> triangles;
+  std::vector<Point3> normals;
+  for (const auto& f : faces)
+    for (const auto& tri : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}})
+    {
+      vtkIdType ids[3];
+      for (int c = 0; c < 3; ++c)
+        ids[c] = points->InsertNextPoint(at(f.nodes[static_cast<std::size_t>(tri[static_cast<std::size_t>(c)])]).data());
+      triangles->InsertNextCell(3, ids);
+      const Point3 a = at(f.nodes[static_cast<std::size_t>(tri[0])]), b = at(f.nodes[static_cast<std::size_t>(tri[1])]),
+                   c = at(f.nodes[static_cast<std::size_t>(tri[2])]);
+      normals.push_back((b - a).cross(c - a).normalized());
+    }
+  vtkNew<vtkPolyData> surface;
+  surface->SetPoints(points);
+  surface->SetPolys(triangles);
+  vtkNew<vtkStaticCellLocator> locator;
+  locator->SetDataSet(surface);
+  locator->BuildLocator();
+  const auto& upper = *Set(mesh, kUpperLipContactSet);
+  gap.minimum = std::numeric_limits<double>::infinity();
+  vtkNew<vtkGenericCell> cell;
+  for (const auto n : *Set(mesh, kLowerLipContactSet))
+  {
+    if (std::binary_search(upper.begin(), upper.end(), n))
+      continue;
+    const Point3 p = at(n);
+    Point3 closest;
+    vtkIdType id = -1;
+    int sub = 0;
+    double d2 = 0;
+    locator->FindClosestPoint(p.data(), closest.data(), cell, id, sub, d2);
+    const double d = std::sqrt(d2) * ((p - closest).dot(normals[static_cast<std::size_t>(id)]) < 0 ? -1.0 : 1.0);
+    gap.minimum = std::min(gap.minimum, d);
+    gap.mean += d;
+    ++gap.nodes;
+  }
+  if (gap.nodes == 0)
+    gap.minimum = 0;
+  else
+    gap.mean /= static_cast<double>(gap.nodes);
+  return gap;
+}
+
+} // namespace mmrep
