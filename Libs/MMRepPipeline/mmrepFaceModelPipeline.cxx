@@ -31,61 +31,6 @@ double Since(Clock::time_point t0)
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-// Control points must name every atlas landmark once and lie inside the CT volume.
-std::vector<Point3> MatchControlPoints(const CTImage* ct, const std::vector<Landmark>& points, const FEMesh& atlas,
-                                       std::vector<std::string>& names)
-{
-  if (points.empty())
-    throw std::invalid_argument("control points: none given (the atlas needs " +
-                                std::to_string(atlas.landmarks.size()) + ")");
-  if (atlas.landmarks.empty())
-    throw std::invalid_argument("atlas: it has no landmarks to match control points with");
-  std::map<std::string, Point3> byName;
-  for (const auto& p : points)
-  {
-    if (p.name.empty())
-      throw std::invalid_argument("control points: a point has no name");
-    if (!byName.emplace(p.name, p.position).second)
-      throw std::invalid_argument("control points: '" + p.name + "' is given twice");
-  }
-  const auto region = ct->GetLargestPossibleRegion();
-  std::vector<Point3> targets;
-  for (const auto& l : atlas.landmarks)
-  {
-    const auto it = byName.find(l.name);
-    if (it == byName.end())
-      throw std::invalid_argument("control points: '" + l.name + "' is missing (the atlas landmarks are named" +
-                                  [&] {
-                                    std::string s;
-                                    for (const auto& a : atlas.landmarks)
-                                      s += " " + a.name;
-                                    return s;
-                                  }() +
-                                  ")");
-    CTImage::PointType p;
-    for (unsigned a = 0; a < 3; ++a)
-      p[a] = it->second[a];
-    const auto index = ct->TransformPhysicalPointToContinuousIndex<double>(p);
-    bool inside = it->second.allFinite();
-    for (unsigned a = 0; a < 3 && inside; ++a)
-      inside = index[a] >= static_cast<double>(region.GetIndex(a)) - 0.5 &&
-               index[a] <= static_cast<double>(region.GetIndex(a) + static_cast<long>(region.GetSize(a))) - 0.5;
-    if (!inside)
-    {
-      std::ostringstream s;
-      s << "control points: '" << l.name << "' at (" << it->second.x() << ", " << it->second.y() << ", "
-        << it->second.z() << ") mm LPS lies outside the CT volume (check the coordinate system: LPS vs RAS)";
-      throw std::invalid_argument(s.str());
-    }
-    names.push_back(l.name);
-    targets.push_back(it->second);
-  }
-  for (const auto& p : points)
-    if (std::none_of(atlas.landmarks.begin(), atlas.landmarks.end(), [&](const Landmark& l) { return l.name == p.name; }))
-      throw std::invalid_argument("control points: '" + p.name + "' is not an atlas landmark");
-  return targets;
-}
-
 // `fittedHalf[i]`: node i of the atlas lies on the fitted (left) half or on the plane.
 ModelAccuracy Measure(const std::string& state, const FEMesh& mesh, vtkPolyData* skin, vtkPolyData* skull,
                       const std::vector<std::string>& names, const std::vector<Point3>& targets,
@@ -118,10 +63,66 @@ ModelAccuracy Measure(const std::string& state, const FEMesh& mesh, vtkPolyData*
   return a;
 }
 
-// The part of a surface within `margin` mm of the mesh's bounding box: every node's closest
-// surface point is in it when the node is within `margin` of the surface, and the repair's
-// projections query a locator over far fewer triangles.
-vtkSmartPointer<vtkPolyData> CropAround(vtkPolyData* surface, const FEMesh& mesh, double margin)
+} // namespace
+
+std::vector<Point3> MatchControlPoints(const CTImage* ct, const std::vector<Landmark>& points, const FEMesh& atlas,
+                                       std::vector<std::string>& names)
+{
+  if (points.empty())
+    throw std::invalid_argument("control points: none given (the atlas needs " +
+                                std::to_string(atlas.landmarks.size()) + ")");
+  if (atlas.landmarks.empty())
+    throw std::invalid_argument("atlas: it has no landmarks to match control points with");
+  std::map<std::string, Point3> byName;
+  for (const auto& p : points)
+  {
+    if (p.name.empty())
+      throw std::invalid_argument("control points: a point has no name");
+    if (!byName.emplace(p.name, p.position).second)
+      throw std::invalid_argument("control points: '" + p.name + "' is given twice");
+  }
+  std::vector<Point3> targets;
+  for (const auto& l : atlas.landmarks)
+  {
+    const auto it = byName.find(l.name);
+    if (it == byName.end())
+      throw std::invalid_argument("control points: '" + l.name + "' is missing (the atlas landmarks are named" +
+                                  [&] {
+                                    std::string s;
+                                    for (const auto& a : atlas.landmarks)
+                                      s += " " + a.name;
+                                    return s;
+                                  }() +
+                                  ")");
+    bool inside = it->second.allFinite();
+    if (ct != nullptr && inside)
+    {
+      const auto region = ct->GetLargestPossibleRegion();
+      CTImage::PointType p;
+      for (unsigned a = 0; a < 3; ++a)
+        p[a] = it->second[a];
+      const auto index = ct->TransformPhysicalPointToContinuousIndex<double>(p);
+      for (unsigned a = 0; a < 3 && inside; ++a)
+        inside = index[a] >= static_cast<double>(region.GetIndex(a)) - 0.5 &&
+                 index[a] <= static_cast<double>(region.GetIndex(a) + static_cast<long>(region.GetSize(a))) - 0.5;
+    }
+    if (!inside)
+    {
+      std::ostringstream s;
+      s << "control points: '" << l.name << "' at (" << it->second.x() << ", " << it->second.y() << ", "
+        << it->second.z() << ") mm LPS lies outside the CT volume (check the coordinate system: LPS vs RAS)";
+      throw std::invalid_argument(s.str());
+    }
+    names.push_back(l.name);
+    targets.push_back(it->second);
+  }
+  for (const auto& p : points)
+    if (std::none_of(atlas.landmarks.begin(), atlas.landmarks.end(), [&](const Landmark& l) { return l.name == p.name; }))
+      throw std::invalid_argument("control points: '" + p.name + "' is not an atlas landmark");
+  return targets;
+}
+
+vtkSmartPointer<vtkPolyData> CropSurfaceAround(vtkPolyData* surface, const FEMesh& mesh, double margin)
 {
   Point3 lo = mesh.nodes.front(), hi = mesh.nodes.front();
   for (const auto& p : mesh.nodes)
@@ -140,8 +141,6 @@ vtkSmartPointer<vtkPolyData> CropAround(vtkPolyData* surface, const FEMesh& mesh
   vtkSmartPointer<vtkPolyData> out = extract->GetOutput();
   return out;
 }
-
-} // namespace
 
 SubjectSurfaceSet ExtractSubjectSurfaces(const CTImage* ct, const FaceModelOptions& options,
                                          const std::function<void(double)>& progress)
@@ -285,8 +284,8 @@ FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& c
   t = Clock::now();
   result.model = std::move(refined);
   result.qualityAfterQ = quality::SummarizeScaledJacobian(result.model, options.repairThreshold);
-  const auto skinNearModel = CropAround(result.skin, result.model, 20.0);
-  const auto skullNearModel = CropAround(result.skull, result.model, 20.0);
+  const auto skinNearModel = CropSurfaceAround(result.skin, result.model, kRepairSurfaceMargin);
+  const auto skullNearModel = CropSurfaceAround(result.skull, result.model, kRepairSurfaceMargin);
   RepairOptions repair;
   repair.scaledJacobianThreshold = options.repairThreshold;
   repair.maximumSweeps = options.repairSweeps;

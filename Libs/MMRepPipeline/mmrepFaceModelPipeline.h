@@ -98,6 +98,16 @@ SymmetryPlaneResult EstimateSubjectPlane(vtkPolyData* skin, const FaceModelOptio
 // Q's options as the pipeline sets them after R onto a subject with this plane.
 LocalRefinementOptions RefinementOptionsFor(const FaceModelOptions& options, const Plane& plane);
 
+// The control points in the atlas landmarks' order (their names in `names`): each landmark named
+// once, no other name; with a CT, each inside its volume. Throws std::invalid_argument otherwise.
+std::vector<Point3> MatchControlPoints(const CTImage* ct, const std::vector<Landmark>& points, const FEMesh& atlas,
+                                       std::vector<std::string>& names);
+// The part of a surface within `margin` mm of the mesh's bounding box, as the repair gets it: every
+// node's closest surface point is in it when the node is within `margin` of the surface, and the
+// repair's projections query a locator over far fewer triangles.
+vtkSmartPointer<vtkPolyData> CropSurfaceAround(vtkPolyData* surface, const FEMesh& mesh, double margin);
+inline constexpr double kRepairSurfaceMargin = 20.0; // mm, the margin BuildFaceModel crops with
+
 // Throws std::invalid_argument for inputs that cannot work (control points missing, unnamed or
 // outside the CT volume, an atlas without the sets or landmarks), std::runtime_error when a stage
 // fails (no head in the CT, surfaces not overlapping the atlas). A repair that cannot reach the
