@@ -12,6 +12,7 @@
 #include <vtkStaticPointLocator.h>
 
 #include <algorithm>
+#include <map>
 #include <limits>
 #include <stdexcept>
 
@@ -162,6 +163,18 @@ LipGap MeasureLipGap(const FEMesh& mesh, const std::vector<Point3>& displacement
   vtkNew<vtkStaticCellLocator> locator;
   locator->SetDataSet(surface);
   locator->BuildLocator();
+  // Rim of the facing surface: quad edges used by one face only.
+  std::map<std::pair<std::int32_t, std::int32_t>, int> edgeUses;
+  for (const auto& f : faces)
+    for (int c = 0; c < 4; ++c)
+    {
+      const auto a = f.nodes[static_cast<std::size_t>(c)], b = f.nodes[static_cast<std::size_t>((c + 1) % 4)];
+      ++edgeUses[{std::min(a, b), std::max(a, b)}];
+    }
+  std::vector<std::pair<Point3, Point3>> rim;
+  for (const auto& [edge, uses] : edgeUses)
+    if (uses == 1)
+      rim.emplace_back(at(edge.first), at(edge.second));
   const auto& upper = *Set(mesh, kUpperLipContactSet);
   gap.minimum = std::numeric_limits<double>::infinity();
   vtkNew<vtkGenericCell> cell;
@@ -175,7 +188,16 @@ LipGap MeasureLipGap(const FEMesh& mesh, const std::vector<Point3>& displacement
     int sub = 0;
     double d2 = 0;
     locator->FindClosestPoint(p.data(), closest.data(), cell, id, sub, d2);
-    const double d = std::sqrt(d2) * ((p - closest).dot(normals[static_cast<std::size_t>(id)]) < 0 ? -1.0 : 1.0);
+    // A closest point on the facing surface's rim with the node off to the side: the node lies beyond
+    // the facing region (e.g. a protruding lower lip in front of the upper lip's edge), not inside.
+    const bool onRim = std::any_of(rim.begin(), rim.end(), [&](const std::pair<Point3, Point3>& e) {
+      const Point3 a = e.first, ab = e.second - e.first;
+      const double t = std::clamp((closest - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+      return (a + t * ab - closest).norm() < 1e-6;
+    });
+    const double along = (p - closest).dot(normals[static_cast<std::size_t>(id)]);
+    const bool beyond = onRim && std::abs(along) < 0.7 * std::sqrt(d2); // off the rim sideways
+    const double d = std::sqrt(d2) * (along < 0 && !beyond ? -1.0 : 1.0);
     gap.minimum = std::min(gap.minimum, d);
     gap.mean += d;
     ++gap.nodes;

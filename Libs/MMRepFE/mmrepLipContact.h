@@ -55,7 +55,8 @@ std::vector<LipContactFace> LipContactFaces(const FEMesh& mesh, bool upperLip);
 
 // Signed gap (mm) between the lips with the given node displacements (empty: at rest): for every
 // lower-lip contact node that is not on a corner line, its distance to the upper lip's facing
-// surface, negative when it lies inside the upper lip. Returns the smallest and the mean.
+// surface, negative when it lies inside the upper lip (a node whose closest point is on the
+// surface's rim lies beyond the facing region: positive). Returns the smallest and the mean.
 struct LipGap
 {
   double minimum = 0, mean = 0;

@@ -15,7 +15,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <map>
 #include <set>
@@ -238,11 +237,13 @@ DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, st
 
   // Fixed nodes: those of the set that carry a solid (a node without a solid has no stiffness).
   // A model with a jaw: the maxilla is fixed and the mandible moves with the jaw.
-  const bool jaw = HasJaw(mesh) && options.fixedNodeSet == "skull";
+  // (A half model keeps maxilla and mandible but not the axis's right condyle: it cannot open the jaw.)
+  const bool jaw = options.fixedNodeSet == "skull" && mesh.nodeSets.count(kMaxillaSet) && mesh.nodeSets.count(kMandibleSet) &&
+                   !mesh.nodeSets.at(kMaxillaSet).empty();
   if (!(options.jawAngle >= kMinJawAngle && options.jawAngle <= kMaxJawAngle))
     throw std::invalid_argument("jaw angle " + FormatDouble(options.jawAngle) + " deg is outside [" +
                                 FormatDouble(kMinJawAngle) + ", " + FormatDouble(kMaxJawAngle) + "] deg");
-  if (options.jawAngle != 0 && !jaw)
+  if (options.jawAngle != 0 && !(jaw && HasJaw(mesh)))
     throw std::invalid_argument("a jaw opening needs a model with a jaw (node sets 'maxilla', 'mandible' and 'jawAxis'); "
                                 "this one has none: rebuild it from the current atlas");
   if (!(options.contactStiffness > 0))
@@ -488,46 +489,40 @@ DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, st
   WriteIds(out, fixed);
   out << "*BOUNDARY\nFIXED, 1, 3\n";
 
-  // The lips: lower-lip contact nodes (slave) against the upper lip's facing faces (master).
+  // The lips: one uni-directional gap element (GAPUNI) per pair of facing nodes, which coincide at
+  // rest, along the upper lip's facing-surface normal at the pair: the lower node may move away from
+  // the upper one but not through it (linear penalty). ccx's surface contact searches chatter at the
+  // corners, where the slit closes, and do not converge; the pairs stay valid while the lips slide
+  // along each other by less than an element (a few mm).
   if (options.lipContact && HasMouthSlit(mesh))
   {
-    const auto faces = LipContactFaces(mesh, true);
-    const auto& upper = mesh.nodeSets.at(kUpperLipContactSet);
-    // Slaves: the lower lip's own facing nodes, but not those next to a corner line: there the slit
-    // closes, the gap stays within the contact search distance and the contact state chatters.
-    std::vector<char> nearCorner(mesh.nodes.size(), 0);
-    for (const auto& f : LipContactFaces(mesh, false))
-      if (std::any_of(f.nodes.begin(), f.nodes.end(), [&](std::int32_t n) { return std::binary_search(upper.begin(), upper.end(), n); }))
-        for (auto n : f.nodes)
-          nearCorner[static_cast<std::size_t>(n)] = 1;
-    std::vector<std::int32_t> slaves;
-    for (auto n : mesh.nodeSets.at(kLowerLipContactSet))
-      if (used[static_cast<std::size_t>(n)] && !nearCorner[static_cast<std::size_t>(n)])
-        slaves.push_back(n);
-    if (!faces.empty() && !slaves.empty())
+    FEMesh copy = mesh;
+    const ClosedMouth closed = CloseMouth(copy);
+    std::map<std::int32_t, Point3> normals;
+    for (const auto& f : LipContactFaces(mesh, true))
     {
-      out << "** lips: the lower lip's facing nodes may not enter the upper lip (frictionless, linear penalty)\n";
-      out << "*SURFACE, NAME=UPPERLIPCONTACT, TYPE=ELEMENT\n";
-      for (const auto& f : faces)
-        out << f.element + 1 << ", S" << f.face << "\n";
-      if (std::getenv("MMREP_S2S"))
-      {
-        out << "*SURFACE, NAME=LOWERLIPCONTACT, TYPE=ELEMENT\n";
-        for (const auto& f : LipContactFaces(mesh, false))
-          out << f.element + 1 << ", S" << f.face << "\n";
-      }
-      else
-      {
-      out << "*NSET, NSET=LOWERLIPCONTACT\n";
-      WriteIds(out, slaves);
-      out << "*SURFACE, NAME=LOWERLIPCONTACT, TYPE=NODE\nLOWERLIPCONTACT\n";
-      }
-      out << "*SURFACE INTERACTION, NAME=LIPS\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n"
-          << FormatDouble(options.contactStiffness) << ", 1e-5\n"; // σ∞: 10 Pa of tension far apart
-      out << "*CONTACT PAIR, INTERACTION=LIPS, TYPE=" << (std::getenv("MMREP_S2S") ? "SURFACE TO SURFACE" : "NODE TO SURFACE") << "\nLOWERLIPCONTACT, UPPERLIPCONTACT\n";
-      summary.contactNodes = slaves.size();
-      summary.contactFaces = faces.size();
+      const Point3 n = 0.5 * (mesh.nodes[static_cast<std::size_t>(f.nodes[2])] - mesh.nodes[static_cast<std::size_t>(f.nodes[0])])
+                             .cross(mesh.nodes[static_cast<std::size_t>(f.nodes[3])] - mesh.nodes[static_cast<std::size_t>(f.nodes[1])]);
+      for (auto v : f.nodes)
+        normals[v] += n; // area-weighted, outward of the upper lip: towards the lower lip
     }
+    std::size_t id = mesh.elements.size();
+    std::vector<std::pair<std::int32_t, std::int32_t>> pairs;
+    for (const auto& [u, l] : closed.twins)
+      if (used[static_cast<std::size_t>(u)] && used[static_cast<std::size_t>(l)] && normals.count(u) && normals[u].norm() > 0)
+        pairs.emplace_back(u, l);
+    if (!pairs.empty())
+      out << "** lips: gap elements between the facing nodes of the mouth slit (no interpenetration)\n";
+    for (const auto& [u, l] : pairs)
+    {
+      const Point3 n = normals[u].normalized();
+      const std::string set = "G" + std::to_string(++id);
+      out << "*ELEMENT, TYPE=GAPUNI, ELSET=" << set << "\n" << id << ", " << u + 1 << ", " << l + 1 << "\n";
+      out << "*GAP, ELSET=" << set << "\n0., " << FormatDouble(n.x()) << ", " << FormatDouble(n.y()) << ", "
+          << FormatDouble(n.z()) << ", , " << FormatDouble(options.contactStiffness) << ", 1e-7\n";
+    }
+    summary.contactNodes = pairs.size();
+    summary.contactFaces = LipContactFaces(mesh, true).size();
   }
   // The load parameter ("temperature") starts at 0 and is ramped to 1 during the static step.
   out << "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nNALL, 0.\n";

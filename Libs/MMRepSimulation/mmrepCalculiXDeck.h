@@ -15,7 +15,7 @@
 //     *EQUATION per node, the element's own shape functions, so it is exact for any deformation);
 //   * fixed nodes (node set "skull" by default; `maxilla` on a model with a jaw): *BOUNDARY 1–3;
 //   * a jaw opening: the `mandible` nodes' rigid rotation as prescribed displacements (mmrepJaw.h);
-//   * lips: *CONTACT PAIR (node to surface, linear penalty) between the facing surfaces of the slit;
+//   * lips: GAPUNI gap elements between the facing nodes of the mouth slit (no interpenetration);
 //   * sliding nodes (optional, e.g. the lips' inner surface on the teeth): n·u = 0 by *EQUATION;
 //   * a half model (mmrepHalfModel.h): its symmetry boundary's solid nodes keep n·u = 0, n the
 //     refitted plane's normal, by *EQUATION too (a node that also slides gets both constraints);
@@ -104,17 +104,18 @@ struct DeckOptions
   // the step); the lip-support nodes nearest the mandible are then left free (their support, the
   // lower teeth, moves away with it). Without a jaw the angle must be 0 and `fixedNodeSet` is fixed.
   double jawAngle = 0;
-  // The lips' facing surfaces (mmrepLipContact.h) as a frictionless contact pair: lower-lip nodes
-  // against the upper lip's faces, linear penalty `contactStiffness` (N/mm³ of overclosure).
+  // The lips' facing surfaces (mmrepLipContact.h) kept from interpenetrating: a gap element (GAPUNI,
+  // frictionless) per pair of facing nodes along the upper surface's normal, penalty
+  // `contactStiffness` (N/mm of overclosure per pair).
   bool lipContact = true;
-  double contactStiffness = 1.0;
+  double contactStiffness = 50.0;
 };
 
 // What the deck contains (for reports and tests).
 struct DeckSummary
 {
   std::size_t solids = 0, springs = 0, equations = 0, fixedNodes = 0, slidingNodes = 0, symmetryNodes = 0;
-  std::size_t jawNodes = 0, contactNodes = 0, contactFaces = 0; // mandible nodes moved; lip contact pair
+  std::size_t jawNodes = 0, contactNodes = 0, contactFaces = 0; // mandible nodes moved; lip gap pairs, facing faces
   std::vector<std::string> activeMuscles; // muscles written as springs, in activation order
 };
 
