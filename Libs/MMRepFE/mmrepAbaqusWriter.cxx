@@ -117,8 +117,10 @@ void WriteAbaqus(const FEMesh& mesh, std::ostream& out)
     ++k;
   }
 
-  // The lips' facing surfaces and their contact pair (frictionless, the linear penalty of the
-  // simulation: 1 N/mm³ of overclosure), so that a solver keeps them from interpenetrating.
+  // The lips' facing surfaces and their contact interaction (frictionless, linear penalty 1 N/mm³
+  // of overclosure). The pair itself is written as a comment line to remove: contact makes every
+  // analysis non-linear, and CalculiX then expands the T3D2 cables with mean-rotation constraints,
+  // which a held muscle node breaks (SimulateMuscleActivation uses gap elements instead).
   const auto upperFaces = LipContactFaces(mesh, true), lowerFaces = LipContactFaces(mesh, false);
   if (!upperFaces.empty() && !lowerFaces.empty())
   {
@@ -130,7 +132,8 @@ void WriteAbaqus(const FEMesh& mesh, std::ostream& out)
         out << f.element + 1 << ", S" << f.face << "\n";
     }
     out << "*SURFACE INTERACTION, NAME=LIPS\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n1., 1e-9\n";
-    out << "*CONTACT PAIR, INTERACTION=LIPS, TYPE=SURFACE TO SURFACE\nS_LOWERLIP, S_UPPERLIP\n";
+    out << "** to keep the lips apart, remove '** ' from the next two lines (the analysis becomes non-linear):\n"
+        << "** *CONTACT PAIR, INTERACTION=LIPS, TYPE=SURFACE TO SURFACE\n** S_LOWERLIP, S_UPPERLIP\n";
   }
 
   // A half model: its plane nodes move within the plane. Local x axis = plane normal (point a of

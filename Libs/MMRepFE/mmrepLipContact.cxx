@@ -9,9 +9,9 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkStaticCellLocator.h>
-#include <vtkStaticPointLocator.h>
 
 #include <algorithm>
+#include <iterator>
 #include <map>
 #include <limits>
 #include <stdexcept>
@@ -51,28 +51,17 @@ ClosedMouth CloseMouth(FEMesh& mesh)
     return closed;
   const auto& upper = *Set(mesh, kUpperLipContactSet);
   const auto& lower = *Set(mesh, kLowerLipContactSet);
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (const auto n : upper)
-    points->InsertNextPoint(mesh.nodes[static_cast<std::size_t>(n)].data());
-  vtkNew<vtkPolyData> cloud;
-  cloud->SetPoints(points);
-  vtkNew<vtkStaticPointLocator> locator;
-  locator->SetDataSet(cloud);
-  locator->BuildLocator();
+  std::vector<std::int32_t> upperOnly, lowerOnly;
+  std::set_difference(upper.begin(), upper.end(), lower.begin(), lower.end(), std::back_inserter(upperOnly));
+  std::set_difference(lower.begin(), lower.end(), upper.begin(), upper.end(), std::back_inserter(lowerOnly));
+  if (upperOnly.size() != lowerOnly.size())
+    throw std::invalid_argument("mouth slit: " + std::to_string(lowerOnly.size()) + " lower-lip and " +
+                                std::to_string(upperOnly.size()) + " upper-lip facing nodes (they must pair up)");
   std::vector<std::int32_t> partner(mesh.nodes.size(), -1);
-  for (const auto n : lower)
+  for (std::size_t i = 0; i < upperOnly.size(); ++i)
   {
-    if (std::binary_search(upper.begin(), upper.end(), n))
-      continue; // a corner-line node: shared already
-    const Point3& p = mesh.nodes[static_cast<std::size_t>(n)];
-    const vtkIdType c = locator->FindClosestPoint(p.data());
-    const std::int32_t u = upper[static_cast<std::size_t>(c)];
-    if (c < 0 || (mesh.nodes[static_cast<std::size_t>(u)] - p).norm() > 1e-6)
-      throw std::invalid_argument("mouth slit: lower-lip contact node " + std::to_string(n) +
-                                  " does not coincide with an upper-lip node (the lips are not closed: a deformed model?)");
-    partner[static_cast<std::size_t>(n)] = u;
-    closed.twins.emplace_back(u, n);
+    partner[static_cast<std::size_t>(lowerOnly[i])] = upperOnly[i];
+    closed.twins.emplace_back(upperOnly[i], lowerOnly[i]);
   }
   for (const auto e : *ElementSet(mesh, kLowerLipSet))
   {

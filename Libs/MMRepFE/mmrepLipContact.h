@@ -31,11 +31,11 @@ struct ClosedMouth
   std::vector<std::pair<std::size_t, int>> slots;           // (element, corner) that used a lower-lip node
 };
 
-// Pairs every lower-lip contact node that is not an upper-lip contact node with the upper-lip
-// contact node at the same point (within 1e-6 mm) and makes the lower lip's elements use it: the
-// twins are then used by no element. Nothing to do (empty result) on a model without a slit.
-// Throws std::invalid_argument when a lower-lip contact node has no coincident partner (the lips
-// were moved apart, e.g. a deformed model).
+// Pairs the facing nodes (twins: the i-th lower-lip-only contact node, in index order, with the i-th
+// upper-lip-only one; the atlas numbers them so, and every stage keeps the node order) and makes the
+// lower lip's elements use the upper lip's node: the twins are then used by no element. Nothing to
+// do (empty result) on a model without a slit. Throws std::invalid_argument when the two lips have
+// different numbers of facing nodes.
 ClosedMouth CloseMouth(FEMesh& mesh);
 
 // Undoes CloseMouth: the twins take their partner's current position and the lower lip's elements

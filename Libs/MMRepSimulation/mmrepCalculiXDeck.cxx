@@ -513,9 +513,21 @@ DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, st
         pairs.emplace_back(u, l);
     if (!pairs.empty())
       out << "** lips: gap elements between the facing nodes of the mouth slit (no interpenetration)\n";
+    // On a half model the plane's pairs see only the left faces: their normal is the full model's
+    // (in the plane, by symmetry) once the plane-normal part is removed.
+    std::vector<char> onPlane(mesh.nodes.size(), 0);
+    Point3 planeNormal = Point3::Zero();
+    if (IsHalfModel(mesh))
+    {
+      planeNormal = SymmetryPlaneOf(mesh).normal;
+      for (auto n : mesh.nodeSets.at(kSymmetryBoundarySet))
+        onPlane[static_cast<std::size_t>(n)] = 1;
+    }
     for (const auto& [u, l] : pairs)
     {
-      const Point3 n = normals[u].normalized();
+      Point3 n = normals[u].normalized();
+      if (onPlane[static_cast<std::size_t>(u)])
+        n = (n - n.dot(planeNormal) * planeNormal).normalized();
       const std::string set = "G" + std::to_string(++id);
       out << "*ELEMENT, TYPE=GAPUNI, ELSET=" << set << "\n" << id << ", " << u + 1 << ", " << l + 1 << "\n";
       out << "*GAP, ELSET=" << set << "\n0., " << FormatDouble(n.x()) << ", " << FormatDouble(n.y()) << ", "

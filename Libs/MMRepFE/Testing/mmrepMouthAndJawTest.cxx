@@ -81,11 +81,21 @@ TEST(MouthSlit, CloseAndReopenKeepTheLipsTogether)
     EXPECT_EQ(mesh.nodes[static_cast<std::size_t>(u)], mesh.nodes[static_cast<std::size_t>(l)]);
 }
 
-TEST(MouthSlit, OpenLipsCannotBeClosed)
+TEST(MouthSlit, TwinsPairByIndexOrderWhereverTheyAre)
 {
   FEMesh mesh = TwoLips();
-  mesh.nodes[18].z() -= 0.5; // a twin moved away: a deformed model
-  EXPECT_THROW(CloseMouth(mesh), std::invalid_argument);
+  mesh.nodes[18].z() -= 0.5; // a twin moved away (a perturbed model): closing and reopening rejoins it
+  const ClosedMouth closed = CloseMouth(mesh);
+  ASSERT_EQ(closed.twins.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i)
+    EXPECT_EQ(closed.twins[i].second, static_cast<std::int32_t>(18 + i)); // twins 18..21 with nodes 6, 7, 9, 10
+  EXPECT_EQ(closed.twins[0].first, 6);
+  EXPECT_EQ(closed.twins[3].first, 10);
+  ReopenMouth(mesh, closed);
+  EXPECT_EQ(mesh.nodes[18], mesh.nodes[6]);
+  FEMesh uneven = TwoLips();
+  uneven.nodeSets[kLowerLipContactSet].pop_back();
+  EXPECT_THROW(CloseMouth(uneven), std::invalid_argument);
   FEMesh none = TwoLips();
   none.elementSets.erase(kLowerLipSet);
   EXPECT_FALSE(HasMouthSlit(none));

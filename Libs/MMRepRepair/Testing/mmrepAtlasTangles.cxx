@@ -1,4 +1,6 @@
 #include "mmrepAtlasTangles.h"
+
+#include "mmrepLipContact.h"
 #include "mmrepSurfaceProjector.h"
 
 #include "mmrepFEMeshIO.h"
@@ -87,6 +89,14 @@ MeshTangleContext LoadTangleContext(const std::string& meshPath, const std::stri
 MeshTangleContext MakeTangleContext(FEMesh mesh, vtkSmartPointer<vtkPolyData> skin, vtkSmartPointer<vtkPolyData> skull)
 {
   MeshTangleContext c;
+  // Tangles of the fused lips: the mouth slit closed (its twins then belong to no element and are
+  // dropped from the sets), so that the mirror partners are unique and the tangle moves both lips.
+  const ClosedMouth closed = CloseMouth(mesh);
+  for (const auto& [upper, lower] : closed.twins)
+    for (auto& [name, ids] : mesh.nodeSets)
+      ids.erase(std::remove(ids.begin(), ids.end(), lower), ids.end());
+  for (const auto& set : {kUpperLipSet, kLowerLipSet})
+    mesh.elementSets.erase(set);
   c.mesh = std::move(mesh);
   c.skin = skin;
   c.skull = skull;

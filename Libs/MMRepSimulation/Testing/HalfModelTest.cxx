@@ -136,6 +136,16 @@ TEST(HalfModel, AtlasLeftHalfMatchesTheFullModelsLeftSide)
       leftCables += track.cables.size();
       leftNodes.insert(track.nodes.begin(), track.nodes.end());
     }
+  // Nodes of no element on the left (the jaw axis's left condyle) are kept too.
+  {
+    std::vector<char> inElement(full.nodes.size(), 0);
+    for (const auto& e : full.elements)
+      for (int k = 0; k < NodeCount(e.type); ++k)
+        inElement[static_cast<std::size_t>(e.nodes[k])] = 1;
+    for (std::size_t i = 0; i < full.nodes.size(); ++i)
+      if (!inElement[i] && plane.SignedDistance(full.nodes[i]) > tol)
+        leftNodes.insert(static_cast<std::int32_t>(i));
+  }
   EXPECT_EQ(straddling, 0u);
   EXPECT_EQ(2 * leftSolids, full.SolidElementCount()); // the atlas is symmetric: exactly half
   EXPECT_EQ(half.SolidElementCount(), leftSolids);
@@ -148,18 +158,14 @@ TEST(HalfModel, AtlasLeftHalfMatchesTheFullModelsLeftSide)
               half.nodes.size(), half.SolidElementCount(), half.elements.size() - half.SolidElementCount(),
               half.muscles.size(), half.nodeSets.at(kSymmetryBoundarySet).size());
 
-  // Every kept node is a left-side node of the full model, on the left or on the plane.
-  std::map<std::string, std::int32_t> fullIndex;
-  for (std::size_t i = 0; i < full.nodes.size(); ++i)
-    fullIndex[Key(full.nodes[i])] = static_cast<std::int32_t>(i);
-  ASSERT_EQ(fullIndex.size(), full.nodes.size()); // positions identify nodes
-  std::vector<std::int32_t> origin;
-  for (const auto& p : half.nodes)
+  // Every kept node is a left-side node of the full model, on the left or on the plane, in the full
+  // model's order (positions alone do not identify nodes: the mouth slit's twins coincide).
+  const std::vector<std::int32_t> origin(leftNodes.begin(), leftNodes.end());
+  ASSERT_EQ(origin.size(), half.nodes.size());
+  for (std::size_t i = 0; i < half.nodes.size(); ++i)
   {
-    ASSERT_EQ(fullIndex.count(Key(p)), 1u);
-    origin.push_back(fullIndex.at(Key(p)));
-    EXPECT_EQ(leftNodes.count(origin.back()), 1u);
-    EXPECT_GE(plane.SignedDistance(p), -tol);
+    EXPECT_EQ(half.nodes[i], full.nodes[static_cast<std::size_t>(origin[i])]) << i;
+    EXPECT_GE(plane.SignedDistance(half.nodes[i]), -tol);
   }
   // Sets: each is the full set's left-side nodes / elements.
   for (const auto& [name, ids] : full.nodeSets)
@@ -359,9 +365,14 @@ TEST(HalfModel, FEBioAndGmshExportsDeclareTheSymmetryBoundary)
   EXPECT_GT(expected, 100u);
   EXPECT_EQ(faces.size(), expected);
   const std::regex quad("<quad4 id=\"\\d+\">(\\d+),(\\d+),(\\d+),(\\d+)</quad4>");
+  // Only the symmetry surface's faces (the lips' facing surfaces are surfaces too).
+  const std::size_t from = feb.find("<Surface name=\"symmetryBoundary\">");
+  ASSERT_NE(from, std::string::npos);
+  const std::string symmetrySurface = feb.substr(from, feb.find("</Surface>", from) - from);
   std::size_t quads = 0;
   const Plane plane = SymmetryPlaneOf(half);
-  for (auto it = std::sregex_iterator(feb.begin(), feb.end(), quad); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(symmetrySurface.begin(), symmetrySurface.end(), quad); it != std::sregex_iterator();
+       ++it)
   {
     ++quads;
     std::vector<Point3> p;
@@ -382,8 +393,10 @@ TEST(HalfModel, FEBioAndGmshExportsDeclareTheSymmetryBoundary)
   const std::string msh = Slurp(dir / "half.msh");
   EXPECT_TRUE(std::regex_search(msh, std::regex("\n0 \\d+ \"symmetryBoundary\"\n")));
   const int gmsh = std::system(("gmsh -check '" + (dir / "half.msh").string() + "' > '" + (dir / "gmsh.log").string() + "' 2>&1").c_str());
-  EXPECT_EQ(gmsh, 0);
-  EXPECT_EQ(Slurp(dir / "gmsh.log").find("Error"), std::string::npos) << Slurp(dir / "gmsh.log");
+  EXPECT_TRUE(gmsh == 0 || WEXITSTATUS(gmsh) == 1); // 1: it found errors, which must be only these:
+  // Gmsh's only complaints may be the mouth slit's coincident twins (the slit by design).
+  const std::string log = std::regex_replace(Slurp(dir / "gmsh.log"), std::regex("Error *: [0-9]+ duplicate (nodes|elements)[^\n]*\n"), "");
+  EXPECT_EQ(log.find("Error"), std::string::npos) << Slurp(dir / "gmsh.log");
 }
 
 // Issue 14's half-face simulation: both zygomatici majores on the full atlas against the left one on

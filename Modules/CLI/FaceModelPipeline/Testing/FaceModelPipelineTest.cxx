@@ -3,6 +3,7 @@
 // independently, the pictures; muscle activation of that speaker model with CalculiX (issue 8);
 // and the user-facing errors.
 #include "mmrepFEMeshIO.h"
+#include "mmrepLipContact.h"
 #include "mmrepModuleRunner.h"
 
 #include <nlohmann/json.hpp>
@@ -128,8 +129,22 @@ TEST(FaceModelPipelineModule, BundledCTGivesAValidModelReportAndPictures)
 
   // Gmsh loads the .msh; the .feb holds the model's node and element counts.
   const std::string gmshLog = (dir.path() / "gmsh.log").string();
-  EXPECT_EQ(Shell("gmsh -check '" + (out / "model.msh").string() + "' > '" + gmshLog + "' 2>&1"), 0);
-  EXPECT_EQ(Slurp(gmshLog).find("Error"), std::string::npos) << Slurp(gmshLog);
+  const int gmsh = Shell("gmsh -check '" + (out / "model.msh").string() + "' > '" + gmshLog + "' 2>&1");
+  EXPECT_TRUE(gmsh == 0 || gmsh == 1) << gmsh; // 1: errors found, which must be only those below
+  // Gmsh's only complaints: the mouth slit's coincident twins (nodes, their node-set points and the
+  // lips' facing quadrangles), which are the slit by design.
+  FEMesh closed = model;
+  const std::size_t twins = CloseMouth(closed).twins.size();
+  ASSERT_GT(twins, 0u);
+  std::string log = Slurp(gmshLog);
+  log = std::regex_replace(log, std::regex("Error *: " + std::to_string(twins) + " duplicate nodes[^\n]*\n"), "");
+  log = std::regex_replace(log, std::regex("Error *: [0-9]+ duplicate elements[^\n]*\n"), "");
+  EXPECT_EQ(log.find("Error"), std::string::npos) << Slurp(gmshLog);
+  EXPECT_NE(Slurp(gmshLog).find(std::to_string(twins) + " duplicate nodes"), std::string::npos) << Slurp(gmshLog);
+  // The lips' contact surfaces in all three formats.
+  EXPECT_NE(Slurp(out / "model.msh").find("\"upperLipContactFaces\""), std::string::npos);
+  EXPECT_NE(Slurp(out / "model.inp").find("*SURFACE, NAME=S_LOWERLIP, TYPE=ELEMENT"), std::string::npos);
+  EXPECT_NE(Slurp(out / "model.feb").find("<contact type=\"sliding-elastic\" surface_pair=\"lips\">"), std::string::npos);
   const std::string feb = Slurp(out / "model.feb");
   const auto count = [&](const std::regex& r) {
     return static_cast<std::size_t>(std::distance(std::sregex_iterator(feb.begin(), feb.end(), r), std::sregex_iterator()));

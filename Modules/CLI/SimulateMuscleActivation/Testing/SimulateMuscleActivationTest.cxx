@@ -78,8 +78,11 @@ TEST(SimulateMuscleActivationModule, ZygomaticusMajorLeftRaisesLeftMouthCornerLa
   for (std::size_t i = 0; i < rest.nodes.size(); ++i)
     largest = std::max(largest, (moved.nodes[i] - rest.nodes[i]).norm());
   EXPECT_NEAR(largest, std::stod(values.at("maxDisplacement")), 1e-6);
-  for (auto n : rest.nodeSets.at("skull"))
-    EXPECT_EQ(moved.nodes[static_cast<std::size_t>(n)], rest.nodes[static_cast<std::size_t>(n)]);
+  // The bone attachment holds (maxilla and, with the jaw at rest, mandible); the skull nodes over the
+  // teeth are in neither and may move.
+  for (const char* set : {"maxilla", "mandible"})
+    for (auto n : rest.nodeSets.at(set))
+      EXPECT_EQ(moved.nodes[static_cast<std::size_t>(n)], rest.nodes[static_cast<std::size_t>(n)]);
   EXPECT_TRUE(IsPNG(png));
   EXPECT_TRUE(IsPNG(lips));
 }
