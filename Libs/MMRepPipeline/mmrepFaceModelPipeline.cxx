@@ -219,7 +219,11 @@ FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& c
   };
 
   result.controlTargets = MatchControlPoints(ct, controlPoints, atlas, result.controlNames);
-  CheckFieldOfView(ct, atlas, options.registration.skinSet, result.controlTargets, options.fieldOfViewMargin);
+  if (options.allowPartialFieldOfView)
+    result.fieldOfViewMissing =
+      MissingFieldOfView(ct, atlas, options.registration.skinSet, result.controlTargets, options.fieldOfViewMargin);
+  else
+    CheckFieldOfView(ct, atlas, options.registration.skinSet, result.controlTargets, options.fieldOfViewMargin);
 
   // 1. Surfaces.
   auto t = Clock::now();

@@ -10,8 +10,8 @@
 namespace mmrep
 {
 
-void CheckFieldOfView(const CTImage* ct, const FEMesh& atlas, const std::string& faceSet,
-                      const std::vector<Point3>& targets, double margin)
+std::string MissingFieldOfView(const CTImage* ct, const FEMesh& atlas, const std::string& faceSet,
+                               const std::vector<Point3>& targets, double margin)
 {
   std::vector<Eigen::Vector3d> source, target;
   for (std::size_t i = 0; i < atlas.landmarks.size() && i < targets.size(); ++i)
@@ -26,7 +26,7 @@ void CheckFieldOfView(const CTImage* ct, const FEMesh& atlas, const std::string&
   }
   catch (const std::invalid_argument&)
   {
-    return; // control points that place nothing (coincident, collinear): the pipeline reports them itself
+    return {}; // control points that place nothing (coincident, collinear): the pipeline reports them itself
   }
   const auto set = atlas.nodeSets.find(faceSet);
   if (set == atlas.nodeSets.end())
@@ -72,12 +72,19 @@ void CheckFieldOfView(const CTImage* ct, const FEMesh& atlas, const std::string&
         missing += text;
       }
   }
-  if (!missing.empty())
+  return missing;
+}
+
+void CheckFieldOfView(const CTImage* ct, const FEMesh& atlas, const std::string& faceSet,
+                      const std::vector<Point3>& targets, double margin)
+{
+  if (const std::string missing = MissingFieldOfView(ct, atlas, faceSet, targets, margin); !missing.empty())
   {
     char text[120];
     std::snprintf(text, sizeof text, " (the face region, placed by the control points, needs a %.0f mm margin)",
                   margin);
-    throw std::runtime_error("the CT does not cover the face: it misses the " + missing + text);
+    throw std::runtime_error("the CT does not cover the face: it misses the " + missing + text +
+                             "; --allowPartialFieldOfView builds a partial model");
   }
 }
 

@@ -11,6 +11,12 @@
 namespace mmrep
 {
 
+// What of the face region the CT misses: "chin by 23 mm, right cheek by 4 mm" (each short side, by
+// how many mm including the margin); empty when the CT holds it all, or when the control points
+// place nothing (coincident, collinear: the pipeline reports those itself).
+std::string MissingFieldOfView(const CTImage* ct, const FEMesh& atlas, const std::string& faceSet,
+                               const std::vector<Point3>& targets, double margin);
+
 // Maps the atlas's face region (the nodes of `faceSet`: brow to chin, both cheeks) into the CT by
 // the similarity taking the atlas landmarks to `targets` (the control points, in the atlas
 // landmarks' order) and throws std::runtime_error unless the CT's extent holds all of them with

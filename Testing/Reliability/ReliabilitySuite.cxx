@@ -257,6 +257,39 @@ TEST_P(BadInput, OneLineNothingTouchedNothingLeft)
   EXPECT_EQ(Differences(before, Snapshot(dir)), "") << lines[0];
 }
 
+// The explicit way past the field-of-view refusal: the CT without the chin gives a partial model,
+// with the missing part (as the refusal names it) in report.json and report.md and one warning line.
+TEST(PartialFieldOfView, ModelBuiltMissingRegionReported)
+{
+  ScratchDirectory scratch("partial-fov");
+  const fs::path dir = scratch.path();
+  const std::string common = Quote(std::string(MMREP_BINARY_DIR) + "/bin/FaceModelPipeline") + " " +
+                             Quote((Fixtures() / "cropped.nrrd").string()) + " " +
+                             Quote(kSampleData + "cthead.ControlPoints.mrk.json") + " --noPictures --outputDirectory ";
+  ASSERT_NE(std::system((common + Quote((dir / "refused").string()) + " > /dev/null 2> " + Quote((dir / "refused.err").string())).c_str()), 0);
+  const std::string refusal = Slurp(dir / "refused.err");
+  std::smatch chin;
+  ASSERT_TRUE(std::regex_search(refusal, chin, std::regex(R"(chin by \d+ mm)"))) << refusal;
+  EXPECT_FALSE(fs::exists(dir / "refused"));
+
+  const int status = std::system((common + Quote((dir / "speaker").string()) + " --allowPartialFieldOfView > /dev/null 2> " +
+                                  Quote((dir / "err").string())).c_str());
+  ModuleRun run;
+  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.err = Slurp(dir / "err");
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const auto lines = run.ErrLines();
+  ASSERT_EQ(lines.size(), 1u) << run.err;
+  EXPECT_EQ(lines[0].rfind("FaceModelPipeline: warning: partial model: the CT misses the " + chin.str(), 0), 0u) << lines[0];
+  const std::string report = Slurp(dir / "speaker" / "report.json");
+  EXPECT_NE(report.find("\"complete\": false"), std::string::npos);
+  EXPECT_NE(report.find("\"missing\": \"" + chin.str() + "\""), std::string::npos) << report.substr(0, 400);
+  EXPECT_NE(Slurp(dir / "speaker" / "report.md").find("**Partial model**: the CT misses the " + chin.str()), std::string::npos);
+  // A real model: the atlas's mesh, read back.
+  const auto model = mmrep::ReadFEMesh((dir / "speaker" / "model.vtu").string());
+  EXPECT_EQ(model.elements.size(), mmrep::ReadFEMesh(kAtlasData + "FaceAtlas.vtu").elements.size());
+}
+
 INSTANTIATE_TEST_SUITE_P(Cases, BadInput, ::testing::ValuesIn(BadInputCases()),
                          [](const ::testing::TestParamInfo<BadInputCase>& info) { return info.param.name; });
 
