@@ -11,6 +11,7 @@ PACKAGES=(
   libopenmesh-dev          # half-edge surface meshes
   nlohmann-json3-dev       # Slicer markups (.mrk.json), reports
   libtclap-dev             # command-line parsing (as Slicer's GenerateCLP)
+  zlib1g-dev               # the decompressed length of .nii.gz volumes, checked before reading
   libgtest-dev             # unit tests
   libxml2-utils            # xmllint: module descriptions against the Slicer schema
   calculix-ccx gmsh        # real FE tools that read our exports in the tests

@@ -1,6 +1,7 @@
 // RunModule: command line (TCLAP) from the XML description, error reporting, return parameters.
 #include "mmrepCLIInternal.h"
 #include "mmrepModuleProcessInformation.h"
+#include "mmrepToolkitMessage.h"
 
 #include <itkMacro.h> // itk::ExceptionObject
 #include <tclap/CmdLine.h>
@@ -11,6 +12,7 @@
 #include <iostream>
 #include <memory>
 #include <new>
+#include <regex>
 
 namespace mmrep::cli
 {
@@ -73,8 +75,11 @@ std::string OneLine(std::string text)
 
 int Fail(const std::string& module, const std::string& what, int code)
 {
+  // A toolkit's text passed on as it came (an ITK exception caught as std::exception) is put in words.
+  static const std::regex toolkit(R"(ITK ERROR|itk::ERROR|ERROR: In |\w ?\(0x[0-9a-fA-F]+\))");
   std::cout.flush(); // keep progress lines before the error when both go to one terminal
-  std::cerr << module << ": error: " << OneLine(what) << std::endl;
+  std::cerr << module << ": error: " << OneLine(std::regex_search(what, toolkit) ? ToolkitMessage(what) : what)
+            << std::endl;
   return code;
 }
 
@@ -315,7 +320,7 @@ int RunModule(int argc, char* argv[], const char* xmlDescription, const std::fun
   }
   catch (const itk::ExceptionObject& e)
   {
-    return Fail(module, e.GetDescription(), 1); // what() adds the source file and line
+    return Fail(module, ToolkitMessage(e.GetDescription()), 1); // what() adds the source file and line
   }
   catch (const std::bad_alloc&)
   {

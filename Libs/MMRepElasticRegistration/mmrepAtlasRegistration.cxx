@@ -367,6 +367,8 @@ AtlasRegistrationResult RegisterAtlas(const FEMesh& atlas, const Plane& atlasPla
   RegistrationReport report;
   for (const auto& l : atlas.landmarks)
   {
+    if (!l.position.allFinite())
+      throw std::invalid_argument("atlas registration: atlas landmark '" + l.name + "' is not finite");
     const auto it = std::find_if(subject.controlPoints.begin(), subject.controlPoints.end(),
                                  [&](const Landmark& s) { return s.name == l.name; });
     if (it == subject.controlPoints.end())

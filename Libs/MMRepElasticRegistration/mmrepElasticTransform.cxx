@@ -1,4 +1,5 @@
 #include "mmrepElasticTransform.h"
+#include "mmrepWorkerThreads.h"
 
 #include <itkImageRegionIteratorWithIndex.h>
 
@@ -301,7 +302,7 @@ void FillDisplacementField(DisplacementField* field, const std::function<Eigen::
 {
   const auto region = field->GetLargestPossibleRegion();
   const long long slices = static_cast<long long>(region.GetSize(2));
-  const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+  const unsigned threads = WorkerThreads(8);
   std::atomic<long long> next{0};
   std::vector<std::thread> pool;
   for (unsigned w = 0; w < threads; ++w)

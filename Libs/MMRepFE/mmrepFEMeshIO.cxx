@@ -7,6 +7,7 @@
 #include "mmrepCoordinateSpace.h"
 #include "mmrepFEExport.h"
 #include "mmrepResourceBudget.h"
+#include "mmrepToolkitMessage.h"
 
 #include <vtkLogger.h>
 #include <vtkNew.h>
@@ -56,24 +57,11 @@ public:
     const auto type = this->GetCurrentMessageType();
     if (first_.empty() && text &&
         (type == MESSAGE_TYPE_ERROR || type == MESSAGE_TYPE_WARNING || type == MESSAGE_TYPE_GENERIC_WARNING))
-      first_ = FirstLine(text);
+      first_ = ToolkitMessage(text);
   }
   const std::string& First() const { return first_; }
 
 private:
-  // "ERROR: In file, line N\nClassName (0x…): message\n\n" -> "message".
-  static std::string FirstLine(std::string text)
-  {
-    if (text.rfind("ERROR: In ", 0) == 0 || text.find("Warning: In ") != std::string::npos)
-      if (const auto newline = text.find('\n'); newline != std::string::npos)
-        text = text.substr(newline + 1);
-    if (const auto colon = text.find("): "); colon != std::string::npos && colon < text.find('\n'))
-      text = text.substr(colon + 3);
-    text = text.substr(0, text.find('\n'));
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
-      text.pop_back();
-    return text.empty() ? "unknown VTK error" : text;
-  }
   std::string first_;
 };
 vtkStandardNewMacro(CapturingOutputWindow);

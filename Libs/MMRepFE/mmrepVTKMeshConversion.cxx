@@ -225,7 +225,11 @@ FEMesh FromVTK(vtkUnstructuredGrid* grid)
     throw std::runtime_error("too many points (" + std::to_string(pointCount) + ")");
   mesh.nodes.resize(static_cast<std::size_t>(pointCount));
   for (vtkIdType i = 0; i < pointCount; ++i)
+  {
     grid->GetPoint(i, mesh.nodes[static_cast<std::size_t>(i)].data());
+    if (!mesh.nodes[static_cast<std::size_t>(i)].allFinite())
+      throw std::runtime_error("point " + std::to_string(i) + " has a NaN or infinite coordinate");
+  }
 
   vtkDataArray* layers = grid->GetCellData()->GetArray("Layer");
   if (layers && (layers->GetNumberOfComponents() != 1 || layers->GetNumberOfTuples() != grid->GetNumberOfCells()))
@@ -332,6 +336,8 @@ FEMesh FromVTK(vtkUnstructuredGrid* grid)
       Landmark landmark;
       landmark.name = names->GetValue(k);
       landmarkPositions->GetTuple(k, landmark.position.data());
+      if (!landmark.position.allFinite())
+        throw std::runtime_error("landmark '" + landmark.name + "' has a NaN or infinite coordinate");
       mesh.landmarks.push_back(landmark);
     }
   }

@@ -17,8 +17,10 @@
 #include <itksys/SystemTools.hxx>
 
 #include "mmrepResourceBudget.h"
+#include "mmrepToolkitMessage.h"
 
 #include <gdcmTrace.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,6 +28,8 @@
 #include <type_traits>
 #include <cstdio>
 #include <cstring>
+#include <iostream>
+#include <sstream>
 #include <mutex>
 #include <stdexcept>
 #include <vector>
@@ -67,18 +71,6 @@ void EnsureImageIOFactories()
   throw std::runtime_error("'" + path + "': " + what);
 }
 
-std::string FirstLine(const std::string& text)
-{
-  // ITK exception descriptions span several lines; keep the informative first one.
-  std::string s = text;
-  const std::size_t nl = s.find('\n');
-  if (nl != std::string::npos)
-  {
-    s = s.substr(0, nl);
-  }
-  return s;
-}
-
 // Probes the header to give precise errors (format, dimension, components) before reading.
 itk::ImageIOBase::Pointer ProbeFile(const std::string& path, unsigned int components)
 {
@@ -100,7 +92,12 @@ itk::ImageIOBase::Pointer ProbeFile(const std::string& path, unsigned int compon
   }
   catch (const itk::ExceptionObject& e)
   {
-    Fail(path, "cannot read image header: " + FirstLine(e.GetDescription()));
+    Fail(path, "cannot read image header: " + ToolkitMessage(e.GetDescription()));
+  }
+  if (io->GetComponentType() == itk::IOComponentEnum::UNKNOWNCOMPONENTTYPE)
+  {
+    Fail(path, "unknown voxel type in the header (for example a MetaImage ElementType that is not MET_SHORT, "
+               "MET_FLOAT, ...)");
   }
   if (io->GetNumberOfDimensions() != 3)
   {
@@ -169,19 +166,97 @@ void RequireFiniteVoxels(const std::string& path, const TImage* image, double lo
     }
 }
 
+// NIfTI's reader fills what a truncated file lacks with zeros, silently: the decompressed length
+// is checked against the header's data offset and the voxel bytes before reading.
+void RequireNiftiData(const std::string& path, const itk::ImageIOBase* io)
+{
+  const std::string lower = itksys::SystemTools::LowerCase(path);
+  auto endsWith = [&](const char* e) {
+    const std::size_t n = std::strlen(e);
+    return lower.size() >= n && lower.compare(lower.size() - n, n, e) == 0;
+  };
+  if (!endsWith(".nii") && !endsWith(".nii.gz")) return; // .hdr/.img pairs: the .img is read as it is
+  gzFile file = gzopen(path.c_str(), "rb"); // reads uncompressed files as they are
+  if (file == nullptr) Fail(path, "cannot open");
+  std::vector<unsigned char> header(544, 0);
+  const int headerBytes = gzread(file, header.data(), static_cast<unsigned>(header.size()));
+  std::uint64_t total = headerBytes > 0 ? static_cast<std::uint64_t>(headerBytes) : 0;
+  std::vector<unsigned char> chunk(1 << 20);
+  for (int n; (n = gzread(file, chunk.data(), static_cast<unsigned>(chunk.size()))) > 0;)
+    total += static_cast<std::uint64_t>(n);
+  int error = Z_OK;
+  std::string zlibError = gzerror(file, &error);
+  gzclose(file);
+  if (const auto colon = zlibError.rfind(": "); colon != std::string::npos) zlibError.erase(0, colon + 2); // "path: why"
+  if (error != Z_OK && error != Z_STREAM_END)
+    Fail(path, "truncated or corrupt compressed data (" + zlibError + ")");
+  // sizeof_hdr (348: NIfTI-1, vox_offset a float at 108; 540: NIfTI-2, an int64 at 168), either byte order.
+  auto value = [&](std::size_t at, std::size_t n) {
+    std::int32_t size;
+    std::memcpy(&size, header.data(), 4);
+    std::vector<unsigned char> b(header.begin() + static_cast<long>(at), header.begin() + static_cast<long>(at + n));
+    if (size != 348 && size != 540) std::reverse(b.begin(), b.end());
+    return b;
+  };
+  std::int32_t size;
+  std::memcpy(&size, value(0, 4).data(), 4);
+  double offset = 352; // the smallest a single-file NIfTI-1 has
+  if (size == 348)
+  {
+    float f;
+    std::memcpy(&f, value(108, 4).data(), 4);
+    offset = std::max<double>(offset, f);
+  }
+  else if (size == 540)
+  {
+    std::int64_t v;
+    std::memcpy(&v, value(168, 8).data(), 8);
+    offset = std::max<double>(544, static_cast<double>(v));
+  }
+  const double need = offset + static_cast<double>(io->GetImageSizeInBytes());
+  if (static_cast<double>(total) < need)
+  {
+    char what[160];
+    std::snprintf(what, sizeof what, "truncated file: the header declares %.0f bytes of voxel data, %.0f are present",
+                  static_cast<double>(io->GetImageSizeInBytes()), std::max(0.0, static_cast<double>(total) - offset));
+    Fail(path, what);
+  }
+}
+
+// MetaIO reports a short or corrupt data block on std::cerr and returns the image anyway: its
+// report is taken as the read's failure.
+class CaptureStandardError
+{
+public:
+  CaptureStandardError()
+    : previous_(std::cerr.rdbuf(text_.rdbuf()))
+  {
+  }
+  ~CaptureStandardError() { std::cerr.rdbuf(previous_); }
+  CaptureStandardError(const CaptureStandardError&) = delete;
+  CaptureStandardError& operator=(const CaptureStandardError&) = delete;
+  std::string Text() const { return text_.str(); }
+
+private:
+  std::ostringstream text_;
+  std::streambuf* previous_;
+};
+
 template <typename TImage>
 typename TImage::Pointer ReadWithIO(const std::string& path, itk::ImageIOBase* io)
 {
   auto reader = itk::ImageFileReader<TImage>::New();
   reader->SetFileName(path);
   reader->SetImageIO(io);
+  RequireNiftiData(path, io);
+  CaptureStandardError library;
   try
   {
     reader->Update();
   }
   catch (const itk::ExceptionObject& e)
   {
-    Fail(path, "cannot read voxel data (truncated or corrupt file?): " + FirstLine(e.GetDescription()));
+    Fail(path, "cannot read voxel data (truncated or corrupt file?): " + ToolkitMessage(e.GetDescription()));
   }
   catch (const std::bad_alloc&)
   {
@@ -191,6 +266,8 @@ typename TImage::Pointer ReadWithIO(const std::string& path, itk::ImageIOBase* i
   {
     Fail(path, std::string("cannot read voxel data: ") + e.what());
   }
+  if (const std::string text = library.Text(); !text.empty())
+    Fail(path, "cannot read voxel data (truncated or corrupt file?): " + ToolkitMessage(text));
   typename TImage::Pointer image = reader->GetOutput();
   image->DisconnectPipeline();
   return image;
@@ -250,7 +327,7 @@ CTImage::Pointer ReadDicomDirectory(const std::string& directory)
   }
   catch (const itk::ExceptionObject& e)
   {
-    Fail(directory, "cannot scan DICOM directory: " + FirstLine(e.GetDescription()));
+    Fail(directory, "cannot scan DICOM directory: " + ToolkitMessage(e.GetDescription()));
   }
   if (seriesUIDs.empty())
   {
@@ -273,7 +350,7 @@ CTImage::Pointer ReadDicomDirectory(const std::string& directory)
     }
     catch (const itk::ExceptionObject& e)
     {
-      Fail(files.front(), "cannot read DICOM header: " + FirstLine(e.GetDescription()));
+      Fail(files.front(), "cannot read DICOM header: " + ToolkitMessage(e.GetDescription()));
     }
     try
     {
@@ -296,7 +373,7 @@ CTImage::Pointer ReadDicomDirectory(const std::string& directory)
   }
   catch (const itk::ExceptionObject& e)
   {
-    Fail(directory, "cannot read DICOM series: " + FirstLine(e.GetDescription()));
+    Fail(directory, "cannot read DICOM series: " + ToolkitMessage(e.GetDescription()));
   }
   CTImage::Pointer image = reader->GetOutput();
   image->DisconnectPipeline();
@@ -326,7 +403,7 @@ void WriteFile(const TImage* image, const std::string& path)
   catch (const itk::ExceptionObject& e)
   {
     itksys::SystemTools::RemoveFile(path); // never leave a partial file behind
-    Fail(path, "cannot write image: " + FirstLine(e.GetDescription()));
+    Fail(path, "cannot write image: " + ToolkitMessage(e.GetDescription()));
   }
 }
 
@@ -511,7 +588,7 @@ void WriteDicomSeries(const CTImage* input, const std::string& directory)
     {
       itksys::SystemTools::RemoveFile(f);
     }
-    Fail(directory, "cannot write DICOM series: " + FirstLine(e.GetDescription()));
+    Fail(directory, "cannot write DICOM series: " + ToolkitMessage(e.GetDescription()));
   }
 }
 

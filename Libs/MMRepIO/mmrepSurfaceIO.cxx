@@ -4,6 +4,7 @@
 #include "mmrepCoordinateSpace.h"
 #include "mmrepIOPath.h"
 #include "mmrepResourceBudget.h"
+#include "mmrepToolkitMessage.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
@@ -24,7 +25,9 @@
 #include <vtkXMLPolyDataWriter.h>
 #include <vtksys/SystemTools.hxx>
 
+#include <fstream>
 #include <functional>
+#include <sstream>
 #include <stdexcept>
 
 namespace mmrep
@@ -47,17 +50,7 @@ public:
   {
     if (event == vtkCommand::ErrorEvent && message.empty())
     {
-      message = data ? static_cast<const char*>(data) : "unknown VTK error";
-      while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
-      {
-        message.pop_back();
-      }
-      // VTK prefixes messages with a source-location line; keep the last line.
-      const std::size_t nl = message.find_last_of('\n');
-      if (nl != std::string::npos)
-      {
-        message = message.substr(nl + 1);
-      }
+      message = ToolkitMessage(data ? static_cast<const char*>(data) : "unknown VTK error");
     }
   }
   std::string message;
@@ -79,6 +72,35 @@ std::string SurfaceFormat(const std::string& path)
     }
   }
   return {};
+}
+
+// vtkPLYReader dereferences the vertex coordinates without checking that the header declares
+// them (a header with only "property float x" crashes it): the header is checked first.
+void CheckPLYHeader(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line, element;
+  bool x = false, y = false, z = false;
+  if (!std::getline(in, line) || line.rfind("ply", 0) != 0) Fail(path, "not a PLY file (no 'ply' magic)");
+  for (int n = 0; std::getline(in, line) && n < 10000; ++n)
+  {
+    std::istringstream words(line);
+    std::string word, type, name;
+    words >> word;
+    if (word == "end_header")
+    {
+      if (!(x && y && z)) Fail(path, "the PLY header declares no vertex x, y and z properties");
+      return;
+    }
+    if (word == "element") words >> element;
+    else if (word == "property" && element == "vertex" && (words >> type >> name))
+    {
+      x = x || name == "x";
+      y = y || name == "y";
+      z = z || name == "z";
+    }
+  }
+  Fail(path, "PLY header without end_header");
 }
 
 } // namespace
@@ -114,6 +136,7 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path)
   }
   else if (format == "ply")
   {
+    CheckPLYHeader(path);
     auto r = vtkSmartPointer<vtkPLYReader>::New();
     r->SetFileName(path.c_str());
     reader = r;

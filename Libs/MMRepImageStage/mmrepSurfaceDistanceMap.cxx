@@ -117,6 +117,32 @@ std::vector<Triangle> Triangles(vtkPolyData* surface, std::vector<FeatureNormals
 }
 } // namespace
 
+std::array<double, 3> CheckDistanceMapGrid(const std::array<double, 6>& box, double margin, double spacing,
+                                           const std::string& parameter)
+{
+  constexpr double most = 512.0 * 512.0 * 512.0;
+  std::array<double, 3> counts{};
+  double voxels = 1;
+  for (unsigned a = 0; a < 3; ++a)
+  {
+    counts[a] = std::ceil((box[2 * a + 1] - box[2 * a] + 2 * margin) / spacing) + 1;
+    voxels *= counts[a];
+  }
+  if (!(voxels <= most))
+  {
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "%s %g: the distance map over %.0f x %.0f x %.0f mm would have %.0f million voxels, more than a map "
+                  "may have (512^3 = 134 million); use a spacing of about %.2g mm or more",
+                  parameter.c_str(), spacing, box[1] - box[0] + 2 * margin, box[3] - box[2] + 2 * margin,
+                  box[5] - box[4] + 2 * margin, std::isfinite(voxels) ? voxels / 1e6 : 1e300,
+                  std::max(spacing, std::cbrt((box[1] - box[0] + 2 * margin) * (box[3] - box[2] + 2 * margin) *
+                                              (box[5] - box[4] + 2 * margin) / most)) * 1.01);
+    throw std::runtime_error(text);
+  }
+  return counts;
+}
+
 FloatImage::Pointer ComputeSurfaceDistanceMap(vtkPolyData* surface, const SurfaceDistanceMapOptions& o,
                                               const std::function<void(double)>& progress)
 {
@@ -137,27 +163,15 @@ FloatImage::Pointer ComputeSurfaceDistanceMap(vtkPolyData* surface, const Surfac
   std::array<double, 6> box = o.region;
   if (!(box[0] <= box[1] && box[2] <= box[3] && box[4] <= box[5]))
     surface->GetBounds(box.data());
+  const auto counts = CheckDistanceMapGrid(box, o.margin, o.spacing, "distance map: spacing");
   FloatImage::SizeType size;
   FloatImage::PointType origin;
   FloatImage::SpacingType spacing;
-  double voxels = 1;
   for (unsigned a = 0; a < 3; ++a)
   {
     origin[a] = box[2 * a] - o.margin;
-    const double extent = box[2 * a + 1] + o.margin - origin[a];
-    const double count = std::ceil(extent / o.spacing) + 1; // in floating point: cannot wrap around
-    voxels *= count;
-    size[a] = voxels <= 512.0 * 512.0 * 512.0 ? static_cast<itk::SizeValueType>(count) : 0;
+    size[a] = static_cast<itk::SizeValueType>(counts[a]);
     spacing[a] = o.spacing;
-  }
-  if (!(voxels <= 512.0 * 512.0 * 512.0))
-  {
-    char text[200];
-    std::snprintf(text, sizeof text,
-                  "distance map: the grid would have %.3g voxels at spacing %g mm (at most 512^3); use a coarser "
-                  "spacing or a smaller margin",
-                  voxels, o.spacing);
-    throw std::runtime_error(text);
   }
 
   auto map = FloatImage::New();

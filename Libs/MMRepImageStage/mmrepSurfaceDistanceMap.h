@@ -13,6 +13,7 @@
 #include <vtkPolyData.h>
 
 #include <array>
+#include <string>
 #include <functional>
 
 namespace mmrep
@@ -37,5 +38,12 @@ struct SurfaceDistanceMapOptions
 // Throws std::runtime_error for a surface without triangles or a grid too large (> 512³ voxels).
 FloatImage::Pointer ComputeSurfaceDistanceMap(vtkPolyData* surface, const SurfaceDistanceMapOptions& options,
                                               const std::function<void(double)>& progress = {});
+
+// Refuses, before any work, a grid over `box` (xmin, xmax, ymin, ymax, zmin, zmax) grown by `margin`
+// at `spacing` with more voxels than a map may have (512^3), in floating point so that no count can
+// wrap around; std::runtime_error "<parameter> <spacing>: the distance map over a x b x c mm would
+// have N million voxels ...". Returns the voxel count per axis.
+std::array<double, 3> CheckDistanceMapGrid(const std::array<double, 6>& box, double margin, double spacing,
+                                           const std::string& parameter);
 
 } // namespace mmrep

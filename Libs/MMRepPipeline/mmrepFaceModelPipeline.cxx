@@ -3,6 +3,7 @@
 
 #include "mmrepCanonicalVoxelOrder.h"
 #include "mmrepHeadSegmentation.h"
+#include "mmrepSurfaceDistanceMap.h"
 #include "mmrepSurfaceExtraction.h"
 #include "mmrepSymmetryPlane.h"
 
@@ -218,7 +219,14 @@ FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& c
   };
 
   result.controlTargets = MatchControlPoints(ct, controlPoints, atlas, result.controlNames);
-  CheckFieldOfView(ct, atlas, options.registration.skinSet, result.controlTargets, options.fieldOfViewMargin);
+  if (options.allowPartialFieldOfView)
+    result.fieldOfViewMissing =
+      MissingFieldOfView(ct, atlas, options.registration.skinSet, result.controlTargets, options.fieldOfViewMargin);
+  else
+    CheckFieldOfView(ct, atlas, options.registration.skinSet, result.controlTargets, options.fieldOfViewMargin);
+  // The maps of R cover at least the face region: a spacing that cannot fit it is refused now.
+  if (std::array<double, 6> face; FaceRegionBounds(atlas, options.registration.skinSet, result.controlTargets, face))
+    CheckDistanceMapGrid(face, options.registration.mapMargin, options.registration.mapSpacing, "--mapSpacing");
 
   // 1. Surfaces.
   auto t = Clock::now();

@@ -39,6 +39,10 @@ struct FaceModelOptions
   double repairThreshold = 0.3;          // scaled Jacobian every element must reach
   int repairSweeps = 40; // a model that needs more is better re-registered than ground on
   double fieldOfViewMargin = 5; // mm the CT must extend past the face region (mmrepFieldOfView.h)
+  // A CT that misses part of the face region is refused unless this is set: the model is then built
+  // all the same, with the missing part in FaceModelResult::fieldOfViewMissing (its shape there is
+  // the atlas's, pulled towards whatever skin the CT holds).
+  bool allowPartialFieldOfView = false;
   // (stage name, fraction of the whole pipeline done)
   std::function<void(const std::string&, double)> progress;
 };
@@ -73,6 +77,7 @@ struct FaceModelResult
   MuscleInferenceReport muscles;
   std::vector<std::string> controlNames;          // atlas landmark names = subject control points
   std::vector<Point3> controlTargets;             // the subject's control points, same order
+  std::string fieldOfViewMissing;                 // the part of the face the CT misses (partial model), or empty
   std::vector<ModelAccuracy> accuracy;            // after R, after Q∘R, after repair
   // Which part of the atlas was fitted to the speaker: "left half" (half-face: the right half is its
   // mirror image), "both halves, averaged" or "whole face (asymmetric)".

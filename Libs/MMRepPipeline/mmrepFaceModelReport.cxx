@@ -58,6 +58,7 @@ std::string FaceModelReportJson(const FaceModelResult& r, const FaceModelReportI
 {
   json j;
   j["inputs"] = {{"ct", in.ct}, {"controlPoints", in.controlPoints}, {"atlas", in.atlas}};
+  j["fieldOfView"] = {{"complete", r.fieldOfViewMissing.empty()}, {"missing", r.fieldOfViewMissing}};
   j["thresholds"] = {{"skin", r.thresholds.skin}, {"bone", r.thresholds.bone}, {"source", r.thresholds.source}};
   j["surfaces"] = {{"skinVertices", r.skin->GetNumberOfPoints()},  {"skinTriangles", r.skin->GetNumberOfPolys()},
                    {"skullVertices", r.skull->GetNumberOfPoints()}, {"skullTriangles", r.skull->GetNumberOfPolys()}};
@@ -122,6 +123,9 @@ std::string FaceModelReportMarkdown(const FaceModelResult& r, const FaceModelRep
      << "CT `" << in.ct << "`, control points `" << in.controlPoints << "`, atlas `" << in.atlas << "`.\n"
      << "Model: " << r.model.nodes.size() << " nodes, " << r.model.SolidElementCount() << " solid elements, "
      << r.model.muscles.size() << " muscle tracks. Whole pipeline: " << F(r.totalSeconds, 1) << " s.\n\n";
+  if (!r.fieldOfViewMissing.empty())
+    md << "**Partial model**: the CT misses the " << r.fieldOfViewMissing
+       << " of the face region; there the model is not fitted to the speaker.\n\n";
 
   md << "## Surface accuracy (mm)\n\n"
      << "Fitted: **" << r.fitted << "**. Distances from the model's nodes to the speaker's skin and skull triangle "

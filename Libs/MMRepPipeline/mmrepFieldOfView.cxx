@@ -10,8 +10,10 @@
 namespace mmrep
 {
 
-void CheckFieldOfView(const CTImage* ct, const FEMesh& atlas, const std::string& faceSet,
-                      const std::vector<Point3>& targets, double margin)
+namespace
+{
+// The similarity taking the atlas landmarks to the control points; false when they place nothing.
+bool PlaceAtlas(const FEMesh& atlas, const std::vector<Point3>& targets, SimilarityTransform& toCT)
 {
   std::vector<Eigen::Vector3d> source, target;
   for (std::size_t i = 0; i < atlas.landmarks.size() && i < targets.size(); ++i)
@@ -19,25 +21,57 @@ void CheckFieldOfView(const CTImage* ct, const FEMesh& atlas, const std::string&
     source.push_back(atlas.landmarks[i].position);
     target.push_back(targets[i]);
   }
-  SimilarityTransform toCT;
   try
   {
     toCT = EstimateSimilarity(source, target);
   }
   catch (const std::invalid_argument&)
   {
-    return; // control points that place nothing (coincident, collinear): the pipeline reports them itself
+    return false; // control points that place nothing (coincident, collinear): the pipeline reports them itself
   }
+  return true;
+}
+
+const std::vector<std::int32_t>& FaceSet(const FEMesh& atlas, const std::string& faceSet)
+{
   const auto set = atlas.nodeSets.find(faceSet);
   if (set == atlas.nodeSets.end())
     throw std::invalid_argument("atlas: node set '" + faceSet + "' is missing");
+  return set->second;
+}
+} // namespace
+
+bool FaceRegionBounds(const FEMesh& atlas, const std::string& faceSet, const std::vector<Point3>& targets,
+                      std::array<double, 6>& box)
+{
+  SimilarityTransform toCT;
+  if (!PlaceAtlas(atlas, targets, toCT)) return false;
+  box = {1e300, -1e300, 1e300, -1e300, 1e300, -1e300};
+  for (const auto node : FaceSet(atlas, faceSet))
+  {
+    const Eigen::Vector3d x = toCT.Apply(atlas.nodes[static_cast<std::size_t>(node)]);
+    for (unsigned a = 0; a < 3; ++a)
+    {
+      box[2 * a] = std::min(box[2 * a], x[a]);
+      box[2 * a + 1] = std::max(box[2 * a + 1], x[a]);
+    }
+  }
+  return true;
+}
+
+std::string MissingFieldOfView(const CTImage* ct, const FEMesh& atlas, const std::string& faceSet,
+                               const std::vector<Point3>& targets, double margin)
+{
+  SimilarityTransform toCT;
+  if (!PlaceAtlas(atlas, targets, toCT)) return {};
+  const auto& set = FaceSet(atlas, faceSet);
 
   // How far (mm) the face goes past each end of each CT axis, margin included.
   const auto region = ct->GetLargestPossibleRegion();
   double beyond[3][2] = {{0, 0}, {0, 0}, {0, 0}};
-  for (const std::size_t node : set->second)
+  for (const auto node : set)
   {
-    const Eigen::Vector3d x = toCT.Apply(atlas.nodes[node]);
+    const Eigen::Vector3d x = toCT.Apply(atlas.nodes[static_cast<std::size_t>(node)]);
     CTImage::PointType p;
     for (unsigned a = 0; a < 3; ++a)
       p[a] = x[a];
@@ -72,12 +106,19 @@ void CheckFieldOfView(const CTImage* ct, const FEMesh& atlas, const std::string&
         missing += text;
       }
   }
-  if (!missing.empty())
+  return missing;
+}
+
+void CheckFieldOfView(const CTImage* ct, const FEMesh& atlas, const std::string& faceSet,
+                      const std::vector<Point3>& targets, double margin)
+{
+  if (const std::string missing = MissingFieldOfView(ct, atlas, faceSet, targets, margin); !missing.empty())
   {
     char text[120];
     std::snprintf(text, sizeof text, " (the face region, placed by the control points, needs a %.0f mm margin)",
                   margin);
-    throw std::runtime_error("the CT does not cover the face: it misses the " + missing + text);
+    throw std::runtime_error("the CT does not cover the face: it misses the " + missing + text +
+                             "; --allowPartialFieldOfView builds a partial model");
   }
 }
 

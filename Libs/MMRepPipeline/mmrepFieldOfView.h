@@ -5,11 +5,23 @@
 #include "mmrepFEMesh.h"
 #include "mmrepImageIO.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
 namespace mmrep
 {
+
+// What of the face region the CT misses: "chin by 23 mm, right cheek by 4 mm" (each short side, by
+// how many mm including the margin); empty when the CT holds it all, or when the control points
+// place nothing (coincident, collinear: the pipeline reports those itself).
+std::string MissingFieldOfView(const CTImage* ct, const FEMesh& atlas, const std::string& faceSet,
+                               const std::vector<Point3>& targets, double margin);
+
+// The box (xmin, xmax, ymin, ymax, zmin, zmax) of the face region placed in the CT by the control
+// points: the least the subject's skin (and its distance map) covers. False when they place nothing.
+bool FaceRegionBounds(const FEMesh& atlas, const std::string& faceSet, const std::vector<Point3>& targets,
+                      std::array<double, 6>& box);
 
 // Maps the atlas's face region (the nodes of `faceSet`: brow to chin, both cheeks) into the CT by
 // the similarity taking the atlas landmarks to `targets` (the control points, in the atlas

@@ -1,5 +1,6 @@
 // Per-mesh quality evaluation and summary, see mmrepMeshQuality.h.
 #include "mmrepMeshQuality.h"
+#include "mmrepWorkerThreads.h"
 
 #include "mmrepHexQuality.h"
 #include "mmrepTetQuality.h"
@@ -219,7 +220,7 @@ std::vector<std::vector<double>> ComputeQuality(const FEMesh& mesh, const std::v
     }
   };
 
-  unsigned threads = options.threads > 0 ? static_cast<unsigned>(options.threads) : std::thread::hardware_concurrency();
+  unsigned threads = options.threads > 0 ? static_cast<unsigned>(options.threads) : WorkerThreads();
   threads = std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(chunks)));
   std::vector<std::thread> workers;
   for (unsigned t = 1; t < threads; ++t)

@@ -4,7 +4,10 @@
 //   {atlas} {landmarks} {skin} {skull} the atlas mesh, its landmarks and surfaces (Resources/Atlas)
 //   {field} a 2x2x2 zero displacement field; {nan} a float CT with one NaN voxel
 //   {big} a 4 kB NRRD whose header declares 2048^3 voxels; {bigvtu} {bigvtp} VTK XML files declaring
-//   10^11 points; {dicomjunk} a folder holding junk files only; {cropped} the CT cut below the lips.
+//   10^11 points; {dicomjunk} a folder holding junk files only; {cropped} the CT cut below the lips;
+//   {truncnrrd} {truncmha} {truncnii} {truncniigz} headsq cut to half its length in each format;
+//   {badtype} a MetaImage of an unknown ElementType; {nanatlas} the atlas with a NaN landmark;
+//   {truncvtp} the atlas skin cut to half its length; {noxyz} a PLY declaring no y and z.
 // `earlier` names outputs of an earlier run made before the case ("x/" a folder with a file in it):
 // they, like the inputs, must be byte-identical afterwards and nothing may be added.
 #pragma once
@@ -197,6 +200,11 @@ inline std::vector<BadInputCase> BadInputCases()
     {"DerivedSize_AtlasRegistration_transformSpacing", "AtlasRegistration",
      with(air, {"{d}/o.vtu", "--outputTransform", "{d}/t.nrrd", "--transformSpacing", "0.25"}), 1, "--transformSpacing",
      {}, false, twoGiB},
+    {"DerivedSize_AtlasRegistration_mapSpacing", "AtlasRegistration", with(air, {"{d}/o.vtu", "--mapSpacing", "0.25"}),
+     1, "--mapSpacing 0.25: the distance map over"},
+    {"DerivedSize_FaceModelPipeline_mapSpacing", "FaceModelPipeline",
+     {"{ct}", "{points}", "--outputDirectory", "{d}/speaker", "--noPictures", "--mapSpacing", "0.25"}, 1,
+     "--mapSpacing 0.25: the distance map over", {"speaker/"}},
     {"DerivedSize_FaceModelPipeline_transformSpacing", "FaceModelPipeline",
      {"{ct}", "{points}", "--outputDirectory", "{d}/speaker", "--noPictures", "--transformSpacing", "0.25"}, 1,
      "--transformSpacing", {"speaker/"}, false, twoGiB},
@@ -243,6 +251,28 @@ inline std::vector<BadInputCase> BadInputCases()
     {"DicomJunk_SkinSkullSurfaces", "SkinSkullSurfaces", {"{dicomjunk}", "{d}/skin.vtp", "{d}/skull.vtp"}, 1,
      "dicomjunk"},
     {"DicomJunk_SyntheticSubject", "SyntheticSubject", {"{dicomjunk}", "{d}/o.nrrd"}, 1, "dicomjunk"},
+
+    // Damaged files: the toolkit's error in words (no addresses, no class names), the file named.
+    {"Damaged_SkinSkullSurfaces_truncatedNrrd", "SkinSkullSurfaces", {"{truncnrrd}", "{d}/skin.vtp", "{d}/skull.vtp"}, 1,
+     "truncated.nrrd': cannot read voxel data"},
+    {"Damaged_SkinSkullSurfaces_truncatedMha", "SkinSkullSurfaces", {"{truncmha}", "{d}/skin.vtp", "{d}/skull.vtp"}, 1,
+     "truncated.mha': cannot read voxel data"},
+    {"Damaged_SkinSkullSurfaces_truncatedNii", "SkinSkullSurfaces", {"{truncnii}", "{d}/skin.vtp", "{d}/skull.vtp"}, 1,
+     "truncated.nii': truncated file"},
+    {"Damaged_FaceModelPipeline_truncatedNiiGz", "FaceModelPipeline",
+     {"{truncniigz}", "{points}", "--outputDirectory", "{d}/speaker", "--noPictures"}, 1,
+     "truncated.nii.gz': truncated or corrupt compressed data", {"speaker/"}},
+    {"Damaged_SyntheticSubject_unknownVoxelType", "SyntheticSubject", {"{badtype}", "{d}/o.nrrd"}, 1,
+     "badtype.mha': unknown voxel type"},
+    {"Damaged_DistanceMap_truncatedVtp", "DistanceMap", {"{truncvtp}", "{d}/m.nrrd"}, 1, "truncated.vtp': cannot read"},
+    {"Damaged_SymmetryPlane_plyWithoutCoordinates", "SymmetryPlane", {"{noxyz}"}, 1, "noxyz.ply': the PLY header"},
+
+    // Non-finite atlas landmarks are blamed on the atlas, not on the control points.
+    {"NonFinite_AtlasRegistration_atlasLandmark", "AtlasRegistration",
+     {"{nanatlas}", "{skin}", "{skull}", "{landmarks}", "{d}/o.vtu"}, 1, "nanatlas.vtu: landmark 'LeftEyeOuterCorner'"},
+    {"NonFinite_FaceModelPipeline_atlasLandmark", "FaceModelPipeline",
+     {"{ct}", "{points}", "--outputDirectory", "{d}/speaker", "--noPictures", "--atlas", "{nanatlas}"}, 1,
+     "nanatlas.vtu: landmark 'LeftEyeOuterCorner'", {"speaker/"}},
 
     // Field of view: a CT cut below the lips has no chin; an earlier result stays as it was.
     {"FieldOfView_FaceModelPipeline_noChin", "FaceModelPipeline",

@@ -2,6 +2,7 @@
 // the user is left with: the exit code, exactly one stderr line naming the culprit, and the case's
 // folder (inputs, earlier outputs, $TMPDIR) byte for byte as it was, with nothing added.
 #include "BadInputCases.h"
+#include "mmrepFEMeshIO.h"
 #include "mmrepImageIO.h"
 #include "mmrepModuleRunner.h"
 
@@ -108,6 +109,22 @@ const fs::path& Fixtures()
     crop->SetRegionOfInterest(region);
     crop->Update();
     mmrep::WriteImage(crop->GetOutput(), (d / "cropped.nrrd").string());
+    // Damaged volumes in each format: cut to half their length, or a MetaImage of an unknown type.
+    const auto headsq = mmrep::ReadCTImage(kSampleData + "headsq.nrrd");
+    for (const char* name : {"truncated.nrrd", "truncated.mha", "truncated.nii", "truncated.nii.gz"})
+    {
+      mmrep::WriteImage(headsq.GetPointer(), (d / name).string());
+      fs::resize_file(d / name, fs::file_size(d / name) / 2);
+    }
+    WriteFile(d / "badtype.mha", "ObjectType = Image\nNDims = 3\nDimSize = 4 4 4\nElementType = MET_FOO\n"
+                                 "ElementDataFile = LOCAL\n" + std::string(64, '\0'));
+    // The atlas with one landmark not a number; a surface cut short; a PLY without coordinates.
+    auto atlas = mmrep::ReadFEMesh(kAtlasData + "FaceAtlas.vtu");
+    atlas.landmarks.at(1).position.x() = std::numeric_limits<double>::quiet_NaN();
+    mmrep::WriteFEMesh(atlas, (d / "nanatlas.vtu").string());
+    fs::copy(kAtlasData + "FaceAtlasSkin.vtp", d / "truncated.vtp");
+    fs::resize_file(d / "truncated.vtp", fs::file_size(d / "truncated.vtp") / 2);
+    WriteFile(d / "noxyz.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n2\n3\n");
     return d;
   }();
   struct RemoveAtExit
@@ -139,6 +156,14 @@ const std::map<std::string, fs::path>& Placeholders()
     {"{bigvtp}", Fixtures() / "bigvtp.vtp"},
     {"{dicomjunk}", Fixtures() / "dicomjunk"},
     {"{cropped}", Fixtures() / "cropped.nrrd"},
+    {"{truncnrrd}", Fixtures() / "truncated.nrrd"},
+    {"{truncmha}", Fixtures() / "truncated.mha"},
+    {"{truncnii}", Fixtures() / "truncated.nii"},
+    {"{truncniigz}", Fixtures() / "truncated.nii.gz"},
+    {"{badtype}", Fixtures() / "badtype.mha"},
+    {"{nanatlas}", Fixtures() / "nanatlas.vtu"},
+    {"{truncvtp}", Fixtures() / "truncated.vtp"},
+    {"{noxyz}", Fixtures() / "noxyz.ply"},
   };
   return p;
 }
@@ -226,7 +251,43 @@ TEST_P(BadInput, OneLineNothingTouchedNothingLeft)
   std::printf("%s\n", lines[0].c_str()); // what the user reads
   EXPECT_EQ(lines[0].rfind(c.module + ": error: ", 0), 0u) << lines[0];
   EXPECT_NE(lines[0].find(c.culprit), std::string::npos) << "culprit '" << c.culprit << "' not named: " << lines[0];
+  // No toolkit internals: object addresses, ITK's and VTK's class prefixes, source locations.
+  EXPECT_FALSE(std::regex_search(lines[0], std::regex(R"(0x[0-9a-fA-F]{6,}|ITK ERROR|itk::|\bvtk[A-Z]\w* \(|\.(cxx|hxx):\d+)")))
+    << lines[0];
   EXPECT_EQ(Differences(before, Snapshot(dir)), "") << lines[0];
+}
+
+// The explicit way past the field-of-view refusal: the CT without the chin gives a partial model,
+// with the missing part (as the refusal names it) in report.json and report.md and one warning line.
+TEST(PartialFieldOfView, ModelBuiltMissingRegionReported)
+{
+  ScratchDirectory scratch("partial-fov");
+  const fs::path dir = scratch.path();
+  const std::string common = Quote(std::string(MMREP_BINARY_DIR) + "/bin/FaceModelPipeline") + " " +
+                             Quote((Fixtures() / "cropped.nrrd").string()) + " " +
+                             Quote(kSampleData + "cthead.ControlPoints.mrk.json") + " --noPictures --outputDirectory ";
+  ASSERT_NE(std::system((common + Quote((dir / "refused").string()) + " > /dev/null 2> " + Quote((dir / "refused.err").string())).c_str()), 0);
+  const std::string refusal = Slurp(dir / "refused.err");
+  std::smatch chin;
+  ASSERT_TRUE(std::regex_search(refusal, chin, std::regex(R"(chin by \d+ mm)"))) << refusal;
+  EXPECT_FALSE(fs::exists(dir / "refused"));
+
+  const int status = std::system((common + Quote((dir / "speaker").string()) + " --allowPartialFieldOfView > /dev/null 2> " +
+                                  Quote((dir / "err").string())).c_str());
+  ModuleRun run;
+  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.err = Slurp(dir / "err");
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const auto lines = run.ErrLines();
+  ASSERT_EQ(lines.size(), 1u) << run.err;
+  EXPECT_EQ(lines[0].rfind("FaceModelPipeline: warning: partial model: the CT misses the " + chin.str(), 0), 0u) << lines[0];
+  const std::string report = Slurp(dir / "speaker" / "report.json");
+  EXPECT_NE(report.find("\"complete\": false"), std::string::npos);
+  EXPECT_NE(report.find("\"missing\": \"" + chin.str() + "\""), std::string::npos) << report.substr(0, 400);
+  EXPECT_NE(Slurp(dir / "speaker" / "report.md").find("**Partial model**: the CT misses the " + chin.str()), std::string::npos);
+  // A real model: the atlas's mesh, read back.
+  const auto model = mmrep::ReadFEMesh((dir / "speaker" / "model.vtu").string());
+  EXPECT_EQ(model.elements.size(), mmrep::ReadFEMesh(kAtlasData + "FaceAtlas.vtu").elements.size());
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, BadInput, ::testing::ValuesIn(BadInputCases()),

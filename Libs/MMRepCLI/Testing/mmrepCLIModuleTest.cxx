@@ -270,9 +270,9 @@ TEST(CLIModule, ModuleErrorIsExit1) { ExpectModuleFailure("module", "requested m
 
 TEST(CLIModule, StdExceptionIsExit1) { ExpectModuleFailure("std", "requested std failure"); }
 
-TEST(CLIModule, ItkExceptionIsExit1WithoutSourceLocation)
+TEST(CLIModule, ItkExceptionIsExit1InWords) // no source location, no "ITK ERROR:" prefix
 {
-  ExpectModuleFailure("itk", "ITK ERROR: requested itk failure");
+  ExpectModuleFailure("itk", "requested itk failure");
 }
 
 TEST(CLIModule, FailureAfterWritingLeavesNoFile)

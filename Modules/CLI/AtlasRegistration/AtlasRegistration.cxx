@@ -6,9 +6,11 @@
 #include "mmrepFEMeshIO.h"
 #include "mmrepLandmarkIO.h"
 #include "mmrepResourceBudget.h"
+#include "mmrepSurfaceDistanceMap.h"
 #include "mmrepSurfaceIO.h"
 #include "mmrepSymmetryPlane.h"
 
+#include <array>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -89,6 +91,13 @@ void Run(mmrep::cli::ModuleContext& ctx)
   subject.skin = mmrep::ReadSurface(args.String("subjectSkin"));
   subject.skull = mmrep::ReadSurface(args.String("subjectSkull"));
   subject.controlPoints = mmrep::ReadLandmarks(args.String("subjectControlPoints"));
+  for (vtkPolyData* surface : {subject.skin.Get(), subject.skull.Get()}) // the maps of R, sized before the work
+  {
+    std::array<double, 6> bounds;
+    surface->GetBounds(bounds.data());
+    mmrep::CheckDistanceMapGrid(bounds, mmrep::AtlasRegistrationOptions{}.mapMargin, args.Double("mapSpacing"),
+                                "--mapSpacing");
+  }
 
   const mmrep::Plane atlasPlane = args.Given("atlasPlane") ? PlaneArgument(args, "atlasPlane")
                                                            : mmrep::FitPlaneToNodeSet(atlas, "midsagittal");

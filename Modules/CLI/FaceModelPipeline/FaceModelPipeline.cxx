@@ -79,6 +79,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
   options.refine = !args.Bool("noRefinement");
   options.refinement.spacing = args.Double("lipsSpacing");
   options.repairThreshold = qualityThreshold;
+  options.allowPartialFieldOfView = args.Bool("allowPartialFieldOfView");
   std::string lastStage;
   options.progress = [&](const std::string& stage, double f) {
     if (stage != lastStage)
@@ -90,6 +91,9 @@ void Run(mmrep::cli::ModuleContext& ctx)
     ctx.progress.ReportRange(0.05, 0.85, f);
   };
   const auto result = mmrep::BuildFaceModel(ct, controlPoints, atlas, options);
+  if (!result.fieldOfViewMissing.empty())
+    std::cerr << ctx.moduleName << ": warning: partial model: the CT misses the " << result.fieldOfViewMissing
+              << " of the face region; there the model is not fitted to the speaker (report.md)" << std::endl;
 
   std::cout << "Scaled Jacobian after Q∘R: min " << result.qualityAfterQ.min << ", " << result.qualityAfterQ.inverted
             << " inverted, " << result.qualityAfterQ.belowThreshold << " below " << qualityThreshold
