@@ -44,11 +44,11 @@ bool HasMouthSlit(const FEMesh& mesh)
          ElementSet(mesh, kLowerLipSet);
 }
 
-ClosedMouth CloseMouth(FEMesh& mesh)
+std::vector<std::pair<std::int32_t, std::int32_t>> MouthTwins(const FEMesh& mesh)
 {
-  ClosedMouth closed;
+  std::vector<std::pair<std::int32_t, std::int32_t>> twins;
   if (!HasMouthSlit(mesh))
-    return closed;
+    return twins;
   const auto& upper = *Set(mesh, kUpperLipContactSet);
   const auto& lower = *Set(mesh, kLowerLipContactSet);
   std::vector<std::int32_t> upperOnly, lowerOnly;
@@ -57,12 +57,20 @@ ClosedMouth CloseMouth(FEMesh& mesh)
   if (upperOnly.size() != lowerOnly.size())
     throw std::invalid_argument("mouth slit: " + std::to_string(lowerOnly.size()) + " lower-lip and " +
                                 std::to_string(upperOnly.size()) + " upper-lip facing nodes (they must pair up)");
-  std::vector<std::int32_t> partner(mesh.nodes.size(), -1);
   for (std::size_t i = 0; i < upperOnly.size(); ++i)
-  {
-    partner[static_cast<std::size_t>(lowerOnly[i])] = upperOnly[i];
-    closed.twins.emplace_back(upperOnly[i], lowerOnly[i]);
-  }
+    twins.emplace_back(upperOnly[i], lowerOnly[i]);
+  return twins;
+}
+
+ClosedMouth CloseMouth(FEMesh& mesh)
+{
+  ClosedMouth closed;
+  closed.twins = MouthTwins(mesh);
+  if (closed.twins.empty())
+    return closed;
+  std::vector<std::int32_t> partner(mesh.nodes.size(), -1);
+  for (const auto& [u, l] : closed.twins)
+    partner[static_cast<std::size_t>(l)] = u;
   for (const auto e : *ElementSet(mesh, kLowerLipSet))
   {
     Element& element = mesh.elements[static_cast<std::size_t>(e)];

@@ -25,17 +25,20 @@ inline const std::string kLowerLipContactSet = "lowerLipContact"; // node set (c
 // True when the model has the four sets above (non-empty).
 bool HasMouthSlit(const FEMesh& mesh);
 
+// The facing-node pairs (upper-lip node, lower-lip twin): the i-th lower-lip-only contact node, in
+// index order, with the i-th upper-lip-only one (the atlas numbers them so, and every stage keeps the
+// node order). Empty on a model without a slit. Throws std::invalid_argument when the two lips have
+// different numbers of facing nodes.
+std::vector<std::pair<std::int32_t, std::int32_t>> MouthTwins(const FEMesh& mesh);
+
 struct ClosedMouth
 {
   std::vector<std::pair<std::int32_t, std::int32_t>> twins; // (upper-lip node, lower-lip node) at one point
   std::vector<std::pair<std::size_t, int>> slots;           // (element, corner) that used a lower-lip node
 };
 
-// Pairs the facing nodes (twins: the i-th lower-lip-only contact node, in index order, with the i-th
-// upper-lip-only one; the atlas numbers them so, and every stage keeps the node order) and makes the
-// lower lip's elements use the upper lip's node: the twins are then used by no element. Nothing to
-// do (empty result) on a model without a slit. Throws std::invalid_argument when the two lips have
-// different numbers of facing nodes.
+// Makes the lower lip's elements use the upper lip's node of each twin pair (MouthTwins): the twins
+// are then used by no element. Nothing to do (empty result) on a model without a slit.
 ClosedMouth CloseMouth(FEMesh& mesh);
 
 // Undoes CloseMouth: the twins take their partner's current position and the lower lip's elements

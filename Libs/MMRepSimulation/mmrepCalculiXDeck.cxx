@@ -496,10 +496,9 @@ DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, st
   // along each other by less than an element (a few mm).
   if (options.lipContact && HasMouthSlit(mesh))
   {
-    FEMesh copy = mesh;
-    const ClosedMouth closed = CloseMouth(copy);
+    const auto upperFaces = LipContactFaces(mesh, true);
     std::map<std::int32_t, Point3> normals;
-    for (const auto& f : LipContactFaces(mesh, true))
+    for (const auto& f : upperFaces)
     {
       const Point3 n = 0.5 * (mesh.nodes[static_cast<std::size_t>(f.nodes[2])] - mesh.nodes[static_cast<std::size_t>(f.nodes[0])])
                              .cross(mesh.nodes[static_cast<std::size_t>(f.nodes[3])] - mesh.nodes[static_cast<std::size_t>(f.nodes[1])]);
@@ -508,7 +507,7 @@ DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, st
     }
     std::size_t id = mesh.elements.size();
     std::vector<std::pair<std::int32_t, std::int32_t>> pairs;
-    for (const auto& [u, l] : closed.twins)
+    for (const auto& [u, l] : MouthTwins(mesh))
       if (used[static_cast<std::size_t>(u)] && used[static_cast<std::size_t>(l)] && normals.count(u) && normals[u].norm() > 0)
         pairs.emplace_back(u, l);
     if (!pairs.empty())
@@ -534,7 +533,7 @@ DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, st
           << FormatDouble(n.z()) << ", , " << FormatDouble(options.contactStiffness) << ", 1e-7\n";
     }
     summary.contactNodes = pairs.size();
-    summary.contactFaces = LipContactFaces(mesh, true).size();
+    summary.contactFaces = upperFaces.size();
   }
   // The load parameter ("temperature") starts at 0 and is ramped to 1 during the static step.
   out << "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nNALL, 0.\n";

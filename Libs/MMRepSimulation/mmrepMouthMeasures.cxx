@@ -46,15 +46,13 @@ MouthMeasures MeasureMouth(const FEMesh& mesh, const ActivationResult& result)
   if (HasMouthSlit(mesh))
   {
     m.hasSlit = true;
-    FEMesh closedCopy = mesh;
-    const ClosedMouth closed = CloseMouth(closedCopy);
     const auto& skin = mesh.nodeSets.count("skin") ? mesh.nodeSets.at("skin") : std::vector<std::int32_t>{};
     auto onSkin = [&](std::int32_t n) { return std::binary_search(skin.begin(), skin.end(), n); };
     auto at = [&](std::int32_t n) {
       return Point3(mesh.nodes[static_cast<std::size_t>(n)] + result.displacements[static_cast<std::size_t>(n)]);
     };
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (const auto& [u, l] : closed.twins)
+    for (const auto& [u, l] : MouthTwins(mesh))
     {
       if (!onSkin(u))
         continue;
