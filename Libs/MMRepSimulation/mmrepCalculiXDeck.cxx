@@ -120,10 +120,29 @@ void CheckActivations(const FEMesh& mesh, const std::vector<MuscleActivation>& a
     throw std::invalid_argument("every activation level is 0: nothing to simulate");
 }
 
-double CableForce(const CableModel& model, double restLength, double level, double elongation)
+std::vector<std::pair<double, double>> CableCurve(const CableModel& model, double maximumForce, double restLength,
+                                                  double level)
 {
-  const double stretch = elongation + level * model.maxContraction * restLength;
-  return model.axialStiffness / restLength * (stretch > 0 ? stretch : model.slackRatio * stretch);
+  static const double stretches[] = {0, 0.3, 0.5, 0.6, 0.7, 0.8, 0.85, 0.9, 0.95, 1, 3};
+  const double fmax = model.forceScale * maximumForce;
+  std::vector<std::pair<double, double>> curve;
+  for (double lambda : stretches)
+  {
+    const double active = lambda < 1 ? std::exp(-(lambda - 1) * (lambda - 1) / model.lengthWidth) : 1.0;
+    curve.emplace_back((lambda - 1) * restLength, fmax * (level * active + model.stabilisingSlope * (lambda - 1)));
+  }
+  return curve;
+}
+
+double CableForce(const CableModel& model, double maximumForce, double restLength, double level, double elongation)
+{
+  const auto curve = CableCurve(model, maximumForce, restLength, level);
+  std::size_t k = 1;
+  while (k + 1 < curve.size() && elongation > curve[k].first)
+    ++k;
+  const auto& [e0, f0] = curve[k - 1];
+  const auto& [e1, f1] = curve[k];
+  return f0 + (f1 - f0) * (elongation - e0) / (e1 - e0);
 }
 
 std::vector<double> ShapeFunctions(ElementType type, const std::array<double, 3>& pcoords)
@@ -211,7 +230,8 @@ std::vector<SlidingNode> LipSupportNodes(const FEMesh& mesh, double margin)
 
 DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, std::ostream& out)
 {
-  CheckActivations(mesh, options.activations);
+  if (!options.activations.empty() || options.loads.empty())
+    CheckActivations(mesh, options.activations);
   const std::string& hexType = options.hexahedronType;
   if (hexType != "C3D8" && hexType != "C3D8I" && hexType != "C3D8R")
     throw std::invalid_argument("hexahedron type '" + hexType + "' must be C3D8, C3D8I or C3D8R");
@@ -219,9 +239,9 @@ DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, st
   if (!(step.initialIncrement > 0 && step.minIncrement > 0 && step.minIncrement <= step.initialIncrement &&
         step.initialIncrement <= step.maxIncrement && step.maxIncrement <= 1 && step.maxIncrements > 0))
     throw std::invalid_argument("step control needs 0 < minimum <= initial <= maximum increment <= 1 and at least one increment");
-  if (!(options.cables.axialStiffness > 0 && options.cables.maxContraction > 0 && options.cables.maxContraction < 1 &&
-        options.cables.slackRatio > 0 && options.cables.slackRatio <= 1))
-    throw std::invalid_argument("cable stiffness must be positive, the maximal contraction in (0, 1), the slack ratio in (0, 1]");
+  const CableModel& cm = options.cables;
+  if (!(cm.forceScale > 0 && cm.lengthWidth > 0 && cm.stabilisingSlope > 0) || !std::isfinite(cm.forceScale))
+    throw std::invalid_argument("the cable force scale, force-length width and stabilising slope must be positive");
 
   DeckSummary summary;
   std::vector<char> used(mesh.nodes.size(), 0);
@@ -252,6 +272,11 @@ DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, st
       summary.activeMuscles.push_back(a.muscle);
     }
   std::vector<char> solidNode = used;
+  for (const auto& load : options.loads)
+    if (load.node < 0 || static_cast<std::size_t>(load.node) >= mesh.nodes.size() || !solidNode[static_cast<std::size_t>(load.node)] ||
+        !load.force.allFinite())
+      throw std::invalid_argument("load on node " + std::to_string(load.node) +
+                                  ": not a node of a solid element, or a non-finite force");
   for (const auto* a : active)
   {
     const MuscleTrack& track = mesh.muscles.at(a->muscle);
@@ -322,11 +347,13 @@ DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, st
   }
 
   // Cables: one SPRINGA element set per cable (each has its own rest length, hence its own curve).
-  const CableModel& cm = options.cables;
   for (const auto* a : active)
   {
     const MuscleTrack& track = mesh.muscles.at(a->muscle);
-    out << "** muscle '" << a->muscle << "', activation " << FormatDouble(a->level) << "\n";
+    if (!(track.maximumForce > 0) || !std::isfinite(track.maximumForce))
+      throw std::invalid_argument("muscle '" + a->muscle + "' has no positive maximum force");
+    out << "** muscle '" << a->muscle << "', activation " << FormatDouble(a->level) << ", maximum force "
+        << FormatDouble(cm.forceScale * track.maximumForce) << " N\n";
     for (std::size_t c = 0; c < track.cables.size(); ++c)
     {
       const auto id = track.cables[c];
@@ -337,14 +364,11 @@ DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, st
       const std::string set = "C" + std::to_string(id + 1);
       out << "*ELEMENT, TYPE=SPRINGA, ELSET=" << set << "\n" << id + 1 << ", " << e.nodes[0] + 1 << ", " << e.nodes[1] + 1 << "\n";
       out << "*SPRING, ELSET=" << set << ", NONLINEAR\n";
-      // Two curves: load parameter 0 (rest, slack below L0) and 1 (active rest length (1 - a eps) L0).
+      // Two curves: load parameter 0 (relaxed) and 1 (the muscle's level); the law is linear in the
+      // level, so ccx's interpolation between them is the law at the ramped level.
       for (int t = 0; t <= 1; ++t)
-      {
-        const double level = t * a->level;
-        const double e0 = -level * cm.maxContraction * L0;
-        for (double elong : {-L0, e0, 2 * L0})
-          out << FormatDouble(CableForce(cm, L0, level, elong)) << ", " << FormatDouble(elong) << ", " << t << ".\n";
-      }
+        for (const auto& [elong, force] : CableCurve(cm, track.maximumForce, L0, t * a->level))
+          out << FormatDouble(force) << ", " << FormatDouble(elong) << ", " << t << ".\n";
       ++summary.springs;
     }
   }
@@ -453,7 +477,18 @@ DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, st
   out << "*STEP, NLGEOM, INC=" << step.maxIncrements << "\n*STATIC\n"
       << FormatDouble(step.initialIncrement) << ", 1., " << FormatDouble(step.minIncrement) << ", "
       << FormatDouble(step.maxIncrement) << "\n";
-  out << "*TEMPERATURE\nNALL, 1.\n*NODE FILE\nU\n*END STEP\n";
+  out << "*TEMPERATURE\nNALL, 1.\n";
+  if (!options.loads.empty())
+  {
+    out << "*CLOAD\n";
+    for (const auto& load : options.loads)
+    {
+      for (int dof = 0; dof < 3; ++dof)
+        if (load.force[dof] != 0)
+          out << load.node + 1 << ", " << dof + 1 << ", " << FormatDouble(load.force[dof]) << "\n";
+    }
+  }
+  out << "*NODE FILE\nU\n*END STEP\n";
   return summary;
 }
 

@@ -300,8 +300,7 @@ MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
         m.d1 /= s;
       }
       options.deck.hexahedronType = ctx.args.String("elementType");
-      options.deck.cables.axialStiffness = ctx.args.Double("cableStiffness");
-      options.deck.cables.maxContraction = ctx.args.Double("maxContraction");
+      options.deck.cables.forceScale = ctx.args.Double("forceScale");
       options.deck.step.maxIncrements = static_cast<int>(ctx.args.Int("maxIncrements"));
       options.deck.step.initialIncrement = ctx.args.Double("initialIncrement");
       options.deck.step.minIncrement = std::min(options.deck.step.minIncrement, options.deck.step.initialIncrement);
