@@ -98,7 +98,7 @@ TEST(CantileverLocking, FullIntegrationLocksReducedAndIncompatibleDoNot)
   const Deflection reduced = TipDeflection("C3D8R", 0.49);
   EXPECT_NEAR(reduced.computed, reduced.analytic, 0.05 * reduced.analytic);
   const Deflection reducedStiff = TipDeflection("C3D8R", 0.499);
-  EXPECT_LT(reducedStiff.computed, 0.75 * reducedStiff.analytic); // hourglass control scales with the bulk modulus
+  EXPECT_LT(reducedStiff.computed, 0.75 * reducedStiff.analytic); // measured 0.43: use C3D8I near ν = 0.5
 }
 
 } // namespace
