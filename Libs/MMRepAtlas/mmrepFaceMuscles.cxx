@@ -24,6 +24,16 @@ MuscleControlPoint Between(const MuscleControlPoint& a, const MuscleControlPoint
 }
 } // namespace
 
+double FaceMuscleMaximumForce(const std::string& name)
+{
+  constexpr double newtonsPerPound = 4.4482216152605;
+  if (name == "ZygomaticusMajor")
+    return 0.730 * newtonsPerPound; // smile, direct probe at the commissure (Neely & Pomerantz 2002)
+  if (name.rfind("OrbicularisOris", 0) == 0)
+    return 0.387 * newtonsPerPound / 4; // pucker at the commissure, shared by the side's four tracks
+  return MuscleTrack::kDefaultMaximumForce;
+}
+
 std::vector<MuscleRule> FaceMuscleRules(const FaceLandmarkSet& lm, const Eigen::Vector3d& c)
 {
   const FacePoint& corner = lm.lipCorner;
@@ -86,6 +96,8 @@ std::vector<MuscleRule> FaceMuscleRules(const FaceLandmarkSet& lm, const Eigen::
                    {fractionOfCorner(lm.pogonion, 0.6, -4, 0.95), fractionOfCorner(lm.lowerLip, 0.35, -2, 0.6)}, false});
   rules.push_back({"Mentalis", {at(lm.labiomental, 5, -3, 0.95), at(lm.pogonion, 7, -4, 0.35)}, false});
   rules.push_back({"Buccinator", {at(corner, 35, 0, 0.95), at(corner, 8, 0, 0.7)}, false});
+  for (auto& rule : rules)
+    rule.maximumForce = FaceMuscleMaximumForce(rule.name);
   return rules;
 }
 
@@ -130,6 +142,7 @@ void AddFaceMuscles(FEMesh& mesh, const FaceGrid& grid, const FaceFrame& frame, 
     for (int side = 0; side < 2; ++side)
     {
       MuscleTrack muscle;
+      muscle.maximumForce = rule.maximumForce;
       const std::string name = rule.name + (side == 0 ? "_L" : "_R");
       auto& cables = mesh.elementSets[name];
       for (std::size_t n = 0; n < track.size(); ++n)

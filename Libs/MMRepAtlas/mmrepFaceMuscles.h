@@ -30,6 +30,12 @@
 //       skin, 7 mm lateral, 4 mm below the pogonion, depth 0.35 (inserts into the dermis).
 //   Buccinator: alveolar processes behind the molars, 35 mm lateral of the corner at its level,
 //       depth 0.95 -> modiolus, 0.7 (deep in the cheek).
+// Maximum force of each fibre (N; FaceMuscleMaximumForce, sources in Resources/Atlas/README.md):
+//   ZygomaticusMajor 3.25: the smile force at the mouth corner measured with a direct probe,
+//       0.730 lb (Neely & Pomerantz 2002).
+//   OrbicularisOris* 0.43: the pucker force at the corner, 0.387 lb = 1.72 N (same study, surface
+//       adhesion), shared by the four tracks of a side that pull on the corner.
+//   every other muscle 1.0: ArtiSynth's face model's generic fibre force (no cited value found).
 #pragma once
 
 #include "mmrepFaceFrame.h"
@@ -53,7 +59,11 @@ struct MuscleRule
   std::string name;                       // without side suffix
   std::vector<MuscleControlPoint> points; // first = insertion (bone or meeting point)
   bool startsOnMidline = false;           // first point on the plane: shared by _L and _R
+  double maximumForce = MuscleTrack::kDefaultMaximumForce; // N, per track
 };
+
+// The maximum force (N) of a muscle's fibre by rule name (without side suffix), see above.
+double FaceMuscleMaximumForce(const std::string& name);
 
 // The rules above, evaluated on the landmarks (centre = face centre, local frame).
 std::vector<MuscleRule> FaceMuscleRules(const FaceLandmarkSet& landmarks, const Eigen::Vector3d& centre);

@@ -60,6 +60,12 @@ struct MuscleTrack
   std::vector<std::int32_t> nodes;     // polyline points, in order (first = insertion)
   std::vector<std::int32_t> cables;    // indices of the Cable elements, cables[i] joins nodes[i], nodes[i+1]
   std::vector<Embedding> embedding;    // one per node: the solid element it lies in
+  // Maximum active force of the fibre in N (the tension every cable of the track carries at full
+  // activation and optimal length). Files written before it was stored read kDefaultMaximumForce.
+  double maximumForce = kDefaultMaximumForce;
+  // ArtiSynth's face model gives each muscle fibre 1 N when nothing better is known
+  // (AnsysFaceMuscleFiberReader.setDefaultMuscleFibreProperties, artisynth_models).
+  static constexpr double kDefaultMaximumForce = 1.0;
 };
 
 struct Landmark

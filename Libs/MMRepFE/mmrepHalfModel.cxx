@@ -239,6 +239,7 @@ FEMesh LeftHalfModel(const FEMesh& full, const HalfModelOptions& options)
   {
     const MuscleTrack& track = *piece.track;
     MuscleTrack out;
+    out.maximumForce = track.maximumForce;
     for (std::size_t k = piece.begin; k < piece.end; ++k)
     {
       const auto n = static_cast<std::size_t>(track.nodes[k]);

@@ -8,7 +8,9 @@
 //               "MMRep.NodeSet.<name>"       int: node indices, in set order
 //               "MMRep.ElementSet.<name>"    int: element indices, in set order
 //               "MMRep.Muscle.<name>.Nodes"  int: track nodes; ".Cables" int: cable elements;
-//               ".EmbeddingElements" int and ".EmbeddingPCoords" double x3: embedding per track node
+//               ".EmbeddingElements" int and ".EmbeddingPCoords" double x3: embedding per track node;
+//               ".MaximumForce" double, one value: the fibre's maximum force in N (absent in older
+//               files: MuscleTrack::kDefaultMaximumForce)
 //               "MMRep.LandmarkNames"        string; "MMRep.LandmarkPositions" double x3 (same order)
 // For viewing only (ignored when reading, field data is authoritative):
 //   point data  "NodeSet.<name>"             uint8 mask, 1 for the set's nodes
@@ -195,6 +197,10 @@ vtkSmartPointer<vtkUnstructuredGrid> ToVTK(const FEMesh& mesh)
     }
     field->AddArray(IntArray(base + "EmbeddingElements", embeddingElements));
     field->AddArray(pcoords);
+    vtkNew<vtkDoubleArray> maximumForce;
+    maximumForce->SetName((base + "MaximumForce").c_str());
+    maximumForce->InsertNextValue(muscle.maximumForce);
+    field->AddArray(maximumForce);
   }
   vtkNew<vtkStringArray> landmarkNames;
   landmarkNames->SetName((kPrefix + "LandmarkNames").c_str());
@@ -301,6 +307,14 @@ FEMesh FromVTK(vtkUnstructuredGrid* grid)
         embeddings[muscle].elements = ReadInts(array);
       else if (part == "EmbeddingPCoords")
         embeddings[muscle].pcoords = Vectors(array);
+      else if (part == "MaximumForce")
+      {
+        auto* values = vtkDataArray::SafeDownCast(array);
+        const double force = values && values->GetNumberOfValues() == 1 ? values->GetComponent(0, 0) : -1;
+        if (!(force > 0 && std::isfinite(force)))
+          throw std::runtime_error("field data array '" + name + "' must hold one positive force (N)");
+        mesh.muscles[muscle].maximumForce = force;
+      }
       else
         throw std::runtime_error("unknown muscle field data array '" + name + "'");
     }

@@ -148,6 +148,7 @@ MuscleInferenceReport InferMuscles(const FEMesh& atlas, const PointMap& atlasToS
   for (const auto& [name, track] : atlas.muscles)
   {
     auto& out = subject.muscles.at(name);
+    out.maximumForce = track.maximumForce;
     out.embedding.resize(track.nodes.size());
     for (std::size_t k = 0; k < track.nodes.size(); ++k)
     {

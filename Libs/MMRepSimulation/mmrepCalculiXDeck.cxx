@@ -1,12 +1,10 @@
-// CalculiX deck writer for muscle activation (see the header for the model).
+// CalculiX deck writer for muscle activation (see the header for the model): checks the options,
+// plans the nodes, then writes the sections of mmrepDeckSections.h in order.
 #include "mmrepCalculiXDeck.h"
 
-#include "mmrepFEExport.h"
+#include "mmrepDeckSections.h"
 #include "mmrepHalfModel.h"
 #include "mmrepJaw.h"
-#include "mmrepLipContact.h"
-
-#include <Eigen/Geometry>
 
 #include <vtkHexahedron.h>
 #include <vtkTetra.h>
@@ -14,75 +12,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <limits>
-#include <map>
 #include <set>
 #include <stdexcept>
 
 namespace mmrep::simulation
 {
-namespace
-{
-// CalculiX reads numbers from fields of at most 20 characters: 12 significant digits always fit
-// ("-1.23456789012e-100" has 19). printf's %g is locale-independent unless a program sets a locale.
-std::string FormatDouble(double v)
-{
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.12g", v);
-  return buffer;
-}
-
-// Abaqus/CalculiX: at most 16 ids per data line.
-void WriteIds(std::ostream& out, const std::vector<std::int32_t>& ids)
-{
-  for (std::size_t i = 0; i < ids.size(); ++i)
-    out << ids[i] + 1 << ((i % 16 == 15 || i + 1 == ids.size()) ? "\n" : ", ");
-}
-
-const char* SolidType(ElementType type, const std::string& hexType)
-{
-  switch (type)
-  {
-    case ElementType::Hexahedron:
-      return hexType.c_str();
-    case ElementType::Wedge:
-      return "C3D6";
-    case ElementType::Tetrahedron:
-      return "C3D4";
-    default:
-      return nullptr;
-  }
-}
-
-std::string LayerTag(TissueLayer layer)
-{
-  std::string name = TissueLayerName(layer);
-  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-  return name;
-}
-
-std::string JoinNames(const std::vector<std::string>& names)
-{
-  std::string s;
-  for (const auto& n : names)
-    s += (s.empty() ? "" : ", ") + n;
-  return s;
-}
-} // namespace
-
-HyperelasticMaterial FaceTissue(double poissonRatio)
-{
-  if (!(poissonRatio > 0 && poissonRatio < 0.5))
-    throw std::invalid_argument("Poisson ratio " + std::to_string(poissonRatio) + " must lie in (0, 0.5)");
-  HyperelasticMaterial m;
-  m.c10 = 2500e-6; // 2500 Pa in N/mm²
-  m.c20 = 1175e-6; // 1175 Pa
-  const double mu = m.ShearModulus();
-  const double bulk = 2 * mu * (1 + poissonRatio) / (3 * (1 - 2 * poissonRatio));
-  m.d1 = 2 / bulk;
-  return m;
-}
+using deck::FormatDouble;
 
 std::vector<std::string> MuscleNames(const FEMesh& mesh)
 {
@@ -111,7 +46,7 @@ void CheckActivations(const FEMesh& mesh, const std::vector<MuscleActivation>& a
                                   a.muscle.substr(0, a.muscle.size() - 2) + "_L', its mirror image");
     if (mesh.muscles.count(a.muscle) == 0)
       throw std::invalid_argument("unknown muscle '" + a.muscle + "'; the model's muscles are: " +
-                                  JoinNames(MuscleNames(mesh)));
+                                  deck::JoinNames(MuscleNames(mesh)));
     if (!seen.insert(a.muscle).second)
       throw std::invalid_argument("muscle '" + a.muscle + "' is given twice");
     if (!(a.level >= 0 && a.level <= 1))
@@ -123,12 +58,6 @@ void CheckActivations(const FEMesh& mesh, const std::vector<MuscleActivation>& a
   }
   if (!anyActive && requireActive)
     throw std::invalid_argument("every activation level is 0: nothing to simulate");
-}
-
-double CableForce(const CableModel& model, double restLength, double level, double elongation)
-{
-  const double stretch = elongation + level * model.maxContraction * restLength;
-  return model.axialStiffness / restLength * (stretch > 0 ? stretch : model.slackRatio * stretch);
 }
 
 std::vector<double> ShapeFunctions(ElementType type, const std::array<double, 3>& pcoords)
@@ -151,72 +80,14 @@ std::vector<double> ShapeFunctions(ElementType type, const std::array<double, 3>
   return w;
 }
 
-std::vector<SlidingNode> LipSupportNodes(const FEMesh& mesh, double margin)
+namespace deck
 {
-  const auto inner = mesh.nodeSets.find("inner");
-  const auto lips = mesh.nodeSets.find("lips");
-  if (inner == mesh.nodeSets.end() || lips == mesh.nodeSets.end() || lips->second.empty())
-    return {};
-  double xmin = 1e300, xmax = -1e300, zmin = 1e300, zmax = -1e300;
-  for (auto n : lips->second)
-  {
-    const Point3& p = mesh.nodes[static_cast<std::size_t>(n)];
-    xmin = std::min(xmin, p.x());
-    xmax = std::max(xmax, p.x());
-    zmin = std::min(zmin, p.z());
-    zmax = std::max(zmax, p.z());
-  }
-  std::vector<char> isInner(mesh.nodes.size(), 0);
-  for (auto n : inner->second)
-    isInner[static_cast<std::size_t>(n)] = 1;
-  // Boundary quads of the hexahedra whose four nodes are inner nodes: the inner surface.
-  static const int faces[6][4] = {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}, {0, 3, 2, 1}, {4, 5, 6, 7}};
-  std::map<std::array<std::int32_t, 4>, std::pair<int, std::array<std::int32_t, 4>>> quads;
-  for (const auto& e : mesh.elements)
-  {
-    if (e.type != ElementType::Hexahedron)
-      continue;
-    for (const auto& f : faces)
-    {
-      std::array<std::int32_t, 4> ids{e.nodes[static_cast<std::size_t>(f[0])], e.nodes[static_cast<std::size_t>(f[1])],
-                                      e.nodes[static_cast<std::size_t>(f[2])], e.nodes[static_cast<std::size_t>(f[3])]};
-      auto key = ids;
-      std::sort(key.begin(), key.end());
-      auto& q = quads[key];
-      ++q.first;
-      q.second = ids;
-    }
-  }
-  std::map<std::int32_t, Point3> normals;
-  for (const auto& [key, q] : quads)
-  {
-    if (q.first != 1 || !std::all_of(key.begin(), key.end(), [&](std::int32_t n) { return isInner[static_cast<std::size_t>(n)] != 0; }))
-      continue;
-    const auto& id = q.second;
-    const Point3 a = mesh.nodes[static_cast<std::size_t>(id[2])] - mesh.nodes[static_cast<std::size_t>(id[0])];
-    const Point3 b = mesh.nodes[static_cast<std::size_t>(id[3])] - mesh.nodes[static_cast<std::size_t>(id[1])];
-    const Point3 n = 0.5 * a.cross(b); // area-weighted
-    for (auto v : id)
-    {
-      auto [it, fresh] = normals.emplace(v, Point3::Zero());
-      // Orientation is irrelevant for n·u = 0; keep the accumulated normals consistent.
-      it->second += (it->second.dot(n) < 0 ? -n : n);
-    }
-  }
-  std::vector<SlidingNode> out;
-  for (const auto& [node, n] : normals)
-  {
-    const Point3& p = mesh.nodes[static_cast<std::size_t>(node)];
-    if (p.x() < xmin - margin || p.x() > xmax + margin || p.z() < zmin - margin || p.z() > zmax + margin || !(n.norm() > 0))
-      continue;
-    out.push_back({node, n.normalized()});
-  }
-  return out;
-}
-
-DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, std::ostream& out)
+namespace
 {
-  CheckActivations(mesh, options.activations, options.jawAngle == 0);
+void CheckSolverOptions(const FEMesh& mesh, const DeckOptions& options)
+{
+  if (!options.activations.empty() || options.loads.empty())
+    CheckActivations(mesh, options.activations, options.jawAngle == 0 && options.loads.empty());
   const std::string& hexType = options.hexahedronType;
   if (hexType != "C3D8" && hexType != "C3D8I" && hexType != "C3D8R")
     throw std::invalid_argument("hexahedron type '" + hexType + "' must be C3D8, C3D8I or C3D8R");
@@ -224,20 +95,16 @@ DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, st
   if (!(step.initialIncrement > 0 && step.minIncrement > 0 && step.minIncrement <= step.initialIncrement &&
         step.initialIncrement <= step.maxIncrement && step.maxIncrement <= 1 && step.maxIncrements > 0))
     throw std::invalid_argument("step control needs 0 < minimum <= initial <= maximum increment <= 1 and at least one increment");
-  if (!(options.cables.axialStiffness > 0 && options.cables.maxContraction > 0 && options.cables.maxContraction < 1 &&
-        options.cables.slackRatio > 0 && options.cables.slackRatio <= 1))
-    throw std::invalid_argument("cable stiffness must be positive, the maximal contraction in (0, 1), the slack ratio in (0, 1]");
+  const CableModel& cm = options.cables;
+  if (!(cm.forceScale > 0 && cm.lengthWidth > 0 && cm.stabilisingSlope > 0) || !std::isfinite(cm.forceScale))
+    throw std::invalid_argument("the cable force scale, force-length width and stabilising slope must be positive");
+}
 
-  DeckSummary summary;
-  std::vector<char> used(mesh.nodes.size(), 0);
-  for (const auto& e : mesh.elements)
-    if (e.type != ElementType::Cable)
-      for (int k = 0; k < NodeCount(e.type); ++k)
-        used[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])] = 1;
-
-  // Fixed nodes: those of the set that carry a solid (a node without a solid has no stiffness).
-  // A model with a jaw: the maxilla is fixed and the mandible moves with the jaw.
-  // (A half model keeps maxilla and mandible but not the axis's right condyle: it cannot open the jaw.)
+// Fixed nodes: those of the set that carry a solid (a node without a solid has no stiffness). A
+// model with a jaw: the maxilla is fixed and the mandible moves with the jaw (a half model keeps
+// maxilla and mandible but not the axis's right condyle: it cannot open the jaw).
+void PlanBone(const FEMesh& mesh, const DeckOptions& options, DeckPlan& plan)
+{
   const bool jaw = options.fixedNodeSet == "skull" && mesh.nodeSets.count(kMaxillaSet) && mesh.nodeSets.count(kMandibleSet) &&
                    !mesh.nodeSets.at(kMaxillaSet).empty();
   if (!(options.jawAngle >= kMinJawAngle && options.jawAngle <= kMaxJawAngle))
@@ -251,30 +118,23 @@ DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, st
   const auto fixedIt = mesh.nodeSets.find(jaw ? kMaxillaSet : options.fixedNodeSet);
   if (fixedIt == mesh.nodeSets.end())
     throw std::invalid_argument("the model has no node set '" + options.fixedNodeSet + "' to fix");
-  std::vector<std::int32_t> fixed;
   for (auto n : fixedIt->second)
-    if (used[static_cast<std::size_t>(n)])
-      fixed.push_back(n);
-  std::vector<std::int32_t> mandible; // solid nodes moved by the jaw
+    if (plan.used[static_cast<std::size_t>(n)])
+      plan.fixed.push_back(n);
   if (jaw)
     for (auto n : mesh.nodeSets.at(kMandibleSet))
-      if (used[static_cast<std::size_t>(n)])
-        (options.jawAngle == 0 ? fixed : mandible).push_back(n);
-  std::sort(fixed.begin(), fixed.end());
-  fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
-  if (fixed.empty())
+      if (plan.used[static_cast<std::size_t>(n)])
+        (options.jawAngle == 0 ? plan.fixed : plan.mandible).push_back(n);
+  std::sort(plan.fixed.begin(), plan.fixed.end());
+  plan.fixed.erase(std::unique(plan.fixed.begin(), plan.fixed.end()), plan.fixed.end());
+  if (plan.fixed.empty())
     throw std::invalid_argument("node set '" + options.fixedNodeSet + "' holds no node of a solid element: nothing is fixed");
-  summary.fixedNodes = fixed.size();
+}
 
-  std::vector<const MuscleActivation*> active;
-  for (const auto& a : options.activations)
-    if (a.level > 0)
-    {
-      active.push_back(&a);
-      summary.activeMuscles.push_back(a.muscle);
-    }
-  std::vector<char> solidNode = used;
-  for (const auto* a : active)
+// The active tracks' nodes join the deck; each must be embedded in a solid and be no solid's node.
+void PlanTracks(const FEMesh& mesh, DeckPlan& plan)
+{
+  for (const auto* a : plan.active)
   {
     const MuscleTrack& track = mesh.muscles.at(a->muscle);
     if (track.embedding.size() != track.nodes.size())
@@ -286,275 +146,54 @@ DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, st
           mesh.elements[static_cast<std::size_t>(emb.element)].type == ElementType::Cable)
         throw std::invalid_argument("muscle '" + a->muscle + "': track node " + std::to_string(i) +
                                     " is not embedded in a solid element");
-      if (solidNode[static_cast<std::size_t>(track.nodes[i])])
+      if (plan.solidNode[static_cast<std::size_t>(track.nodes[i])])
         throw std::invalid_argument("muscle '" + a->muscle + "': track node " + std::to_string(i) +
                                     " is also a node of a solid element (muscle nodes must be separate)");
-      used[static_cast<std::size_t>(track.nodes[i])] = 1;
+      plan.used[static_cast<std::size_t>(track.nodes[i])] = 1;
     }
   }
+}
+} // namespace
 
-  out << "** MMRep muscle activation deck (CalculiX). Units: mm, N, N/mm2 (MPa).\n";
-  out << "** ids: node/element id = MMRep index + 1\n";
-  out << "*NODE, NSET=NALL\n";
-  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
-    if (used[i])
+DeckPlan PlanDeck(const FEMesh& mesh, const DeckOptions& options, DeckSummary& summary)
+{
+  CheckSolverOptions(mesh, options);
+  DeckPlan plan;
+  plan.used.assign(mesh.nodes.size(), 0);
+  for (const auto& e : mesh.elements)
+    if (e.type != ElementType::Cable)
+      for (int k = 0; k < NodeCount(e.type); ++k)
+        plan.used[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])] = 1;
+  PlanBone(mesh, options, plan);
+  summary.fixedNodes = plan.fixed.size();
+  for (const auto& a : options.activations)
+    if (a.level > 0)
     {
-      const auto& p = mesh.nodes[i];
-      out << i + 1 << ", " << FormatDouble(p.x()) << ", " << FormatDouble(p.y()) << ", " << FormatDouble(p.z()) << "\n";
+      plan.active.push_back(&a);
+      summary.activeMuscles.push_back(a.muscle);
     }
+  plan.solidNode = plan.used;
+  for (const auto& load : options.loads)
+    if (load.node < 0 || static_cast<std::size_t>(load.node) >= mesh.nodes.size() ||
+        !plan.solidNode[static_cast<std::size_t>(load.node)] || !load.force.allFinite())
+      throw std::invalid_argument("load on node " + std::to_string(load.node) +
+                                  ": not a node of a solid element, or a non-finite force");
+  PlanTracks(mesh, plan);
+  return plan;
+}
+} // namespace deck
 
-  // Solids grouped by (layer, type); one material and section per layer.
-  const TissueLayer layers[] = {TissueLayer::None, TissueLayer::Epidermis, TissueLayer::Dermis, TissueLayer::Hypodermis};
-  const ElementType solidTypes[] = {ElementType::Hexahedron, ElementType::Wedge, ElementType::Tetrahedron};
-  for (TissueLayer layer : layers)
-  {
-    std::vector<std::string> blocks;
-    for (ElementType type : solidTypes)
-    {
-      std::vector<std::size_t> ids;
-      for (std::size_t i = 0; i < mesh.elements.size(); ++i)
-        if (mesh.elements[i].type == type && mesh.elements[i].layer == layer)
-          ids.push_back(i);
-      if (ids.empty())
-        continue;
-      const std::string name = "E_" + LayerTag(layer) + "_" + ElementTypeName(type);
-      blocks.push_back(name);
-      out << "*ELEMENT, TYPE=" << SolidType(type, hexType) << ", ELSET=" << name << "\n";
-      for (auto i : ids)
-      {
-        out << i + 1;
-        for (auto n : detail::SolverNodeOrder(mesh.elements[i]))
-          out << ", " << n + 1;
-        out << "\n";
-      }
-      summary.solids += ids.size();
-    }
-    if (blocks.empty())
-      continue;
-    const std::string tag = LayerTag(layer);
-    out << "*ELSET, ELSET=L_" << tag << "\n" << JoinNames(blocks) << "\n";
-    const HyperelasticMaterial& m = options.materials[static_cast<std::size_t>(layer)];
-    if (!(m.d1 > 0) || !(m.ShearModulus() > 0))
-      throw std::invalid_argument(std::string("material of layer ") + TissueLayerName(layer) +
-                                  " needs a positive shear modulus and D1 > 0");
-    out << "*MATERIAL, NAME=M_" << tag << "\n*HYPERELASTIC, POLYNOMIAL, N=2\n"
-        << FormatDouble(m.c10) << ", " << FormatDouble(m.c01) << ", " << FormatDouble(m.c20) << ", " << FormatDouble(m.c11)
-        << ", " << FormatDouble(m.c02) << ", " << FormatDouble(m.d1) << ", " << FormatDouble(m.d2) << "\n";
-    out << "*SOLID SECTION, ELSET=L_" << tag << ", MATERIAL=M_" << tag << "\n";
-  }
-
-  // Cables: one SPRINGA element set per cable (each has its own rest length, hence its own curve).
-  const CableModel& cm = options.cables;
-  for (const auto* a : active)
-  {
-    const MuscleTrack& track = mesh.muscles.at(a->muscle);
-    out << "** muscle '" << a->muscle << "', activation " << FormatDouble(a->level) << "\n";
-    for (std::size_t c = 0; c < track.cables.size(); ++c)
-    {
-      const auto id = track.cables[c];
-      const Element& e = mesh.elements[static_cast<std::size_t>(id)];
-      const double L0 = (mesh.nodes[static_cast<std::size_t>(e.nodes[1])] - mesh.nodes[static_cast<std::size_t>(e.nodes[0])]).norm();
-      if (!(L0 > 0))
-        throw std::invalid_argument("muscle '" + a->muscle + "': cable " + std::to_string(c) + " has zero length");
-      const std::string set = "C" + std::to_string(id + 1);
-      out << "*ELEMENT, TYPE=SPRINGA, ELSET=" << set << "\n" << id + 1 << ", " << e.nodes[0] + 1 << ", " << e.nodes[1] + 1 << "\n";
-      out << "*SPRING, ELSET=" << set << ", NONLINEAR\n";
-      // Two curves: load parameter 0 (rest, slack below L0) and 1 (active rest length (1 - a eps) L0).
-      for (int t = 0; t <= 1; ++t)
-      {
-        const double level = t * a->level;
-        const double e0 = -level * cm.maxContraction * L0;
-        for (double elong : {-L0, e0, 2 * L0})
-          out << FormatDouble(CableForce(cm, L0, level, elong)) << ", " << FormatDouble(elong) << ", " << t << ".\n";
-      }
-      ++summary.springs;
-    }
-  }
-
-  // Embedding: u_m - sum N_i u_i = 0 for each direction (4 terms per line at most). A node shared by
-  // two tracks (the orbicularis rings meet on the mid-sagittal plane) gets its equations once.
-  std::vector<char> tied(mesh.nodes.size(), 0);
-  for (const auto* a : active)
-  {
-    const MuscleTrack& track = mesh.muscles.at(a->muscle);
-    for (std::size_t i = 0; i < track.nodes.size(); ++i)
-    {
-      if (tied[static_cast<std::size_t>(track.nodes[i])])
-        continue;
-      tied[static_cast<std::size_t>(track.nodes[i])] = 1;
-      const Element& host = mesh.elements[static_cast<std::size_t>(track.embedding[i].element)];
-      const std::vector<double> w = ShapeFunctions(host.type, track.embedding[i].pcoords);
-      std::vector<std::pair<std::int32_t, double>> terms;
-      for (std::size_t k = 0; k < w.size(); ++k)
-        if (std::abs(w[k]) > 1e-12)
-          terms.emplace_back(host.nodes[k], -w[k]);
-      for (int dof = 1; dof <= 3; ++dof)
-      {
-        out << (dof == 1 ? "*EQUATION\n" : "") << terms.size() + 1 << "\n" << track.nodes[i] + 1 << ", " << dof << ", 1.";
-        for (std::size_t k = 0; k < terms.size(); ++k)
-          out << (((k + 1) % 4 == 0) ? "\n" : ", ") << terms[k].first + 1 << ", " << dof << ", " << FormatDouble(terms[k].second);
-        out << "\n";
-        ++summary.equations;
-      }
-    }
-  }
-
-  // Normal constraints n·u = 0: sliding nodes and, on a half model, the symmetry plane's nodes.
-  std::vector<char> isFixed(mesh.nodes.size(), 0);
-  for (auto n : fixed)
-    isFixed[static_cast<std::size_t>(n)] = 1;
-  std::vector<std::int32_t> constrained; // in order of first constraint
-  std::map<std::int32_t, std::vector<Point3>> normals;
-  auto addNormal = [&](std::int32_t node, const Point3& normal) {
-    auto [it, fresh] = normals.emplace(node, std::vector<Point3>{});
-    if (fresh)
-      constrained.push_back(node);
-    it->second.push_back(normal.normalized());
-  };
-  for (auto n : mandible)
-    isFixed[static_cast<std::size_t>(n)] = 1;
-  // With the jaw open, a lip-support node whose nearest bone node is on the mandible has lost its support.
-  auto onMandibleSide = [&](std::int32_t node) {
-    if (mandible.empty())
-      return false;
-    const Point3& p = mesh.nodes[static_cast<std::size_t>(node)];
-    double best = std::numeric_limits<double>::infinity();
-    bool lower = false;
-    for (const auto* set : {&mesh.nodeSets.at(kMaxillaSet), &mesh.nodeSets.at(kMandibleSet)})
-      for (auto b : *set)
-        if (const double d = (mesh.nodes[static_cast<std::size_t>(b)] - p).squaredNorm(); d < best)
-        {
-          best = d;
-          lower = set == &mesh.nodeSets.at(kMandibleSet);
-        }
-    return lower;
-  };
-  for (const auto& s : options.slidingNodes)
-  {
-    if (s.node < 0 || static_cast<std::size_t>(s.node) >= mesh.nodes.size() || !solidNode[static_cast<std::size_t>(s.node)])
-      throw std::invalid_argument("sliding node " + std::to_string(s.node) + " is not a node of a solid element");
-    if (isFixed[static_cast<std::size_t>(s.node)] || onMandibleSide(s.node))
-      continue;
-    addNormal(s.node, s.normal);
-    ++summary.slidingNodes;
-  }
-  if (options.symmetry && IsHalfModel(mesh))
-  {
-    // Muscle nodes on the plane follow their (left) host element through the embedding.
-    const Point3 normal = SymmetryPlaneOf(mesh).normal;
-    for (auto n : mesh.nodeSets.at(kSymmetryBoundarySet))
-      if (solidNode[static_cast<std::size_t>(n)] && !isFixed[static_cast<std::size_t>(n)])
-      {
-        addNormal(n, normal);
-        ++summary.symmetryNodes;
-      }
-  }
-  for (auto node : constrained)
-  {
-    // Reduced row echelon form of the node's constraints: each equation has its own dependent DOF
-    // (its largest term), absent from the node's other equations; dependent constraints drop out.
-    std::vector<Point3> rows;
-    std::vector<int> leads;
-    for (Point3 r : normals.at(node))
-    {
-      for (std::size_t i = 0; i < rows.size(); ++i)
-        r -= r[leads[i]] / rows[i][leads[i]] * rows[i];
-      if (!(r.norm() > 1e-9))
-        continue;
-      int lead = 0;
-      for (int d = 1; d < 3; ++d)
-        if (std::abs(r[d]) > std::abs(r[lead]))
-          lead = d;
-      for (auto& q : rows)
-        q -= q[lead] / r[lead] * r;
-      rows.push_back(r);
-      leads.push_back(lead);
-    }
-    for (std::size_t i = 0; i < rows.size(); ++i)
-    {
-      const Point3& n = rows[i];
-      std::vector<int> others;
-      for (int d = 0; d < 3; ++d)
-        if (d != leads[i] && std::abs(n[d]) > 1e-12 * std::abs(n[leads[i]]))
-          others.push_back(d);
-      out << "*EQUATION\n" << others.size() + 1 << "\n" << node + 1 << ", " << leads[i] + 1 << ", " << FormatDouble(n[leads[i]]);
-      for (int d : others)
-        out << ", " << node + 1 << ", " << d + 1 << ", " << FormatDouble(n[d]);
-      out << "\n";
-      ++summary.equations;
-    }
-  }
-
-  out << "*NSET, NSET=FIXED\n";
-  WriteIds(out, fixed);
-  out << "*BOUNDARY\nFIXED, 1, 3\n";
-
-  // The lips: one uni-directional gap element (GAPUNI) per pair of facing nodes, which coincide at
-  // rest, along the upper lip's facing-surface normal at the pair: the lower node may move away from
-  // the upper one but not through it (linear penalty). ccx's surface contact searches chatter at the
-  // corners, where the slit closes, and do not converge; the pairs stay valid while the lips slide
-  // along each other by less than an element (a few mm).
-  if (options.lipContact && HasMouthSlit(mesh))
-  {
-    const auto upperFaces = LipContactFaces(mesh, true);
-    std::map<std::int32_t, Point3> normals;
-    for (const auto& f : upperFaces)
-    {
-      const Point3 n = 0.5 * (mesh.nodes[static_cast<std::size_t>(f.nodes[2])] - mesh.nodes[static_cast<std::size_t>(f.nodes[0])])
-                             .cross(mesh.nodes[static_cast<std::size_t>(f.nodes[3])] - mesh.nodes[static_cast<std::size_t>(f.nodes[1])]);
-      for (auto v : f.nodes)
-        normals[v] += n; // area-weighted, outward of the upper lip: towards the lower lip
-    }
-    std::size_t id = mesh.elements.size();
-    std::vector<std::pair<std::int32_t, std::int32_t>> pairs;
-    for (const auto& [u, l] : MouthTwins(mesh))
-      if (used[static_cast<std::size_t>(u)] && used[static_cast<std::size_t>(l)] && normals.count(u) && normals[u].norm() > 0)
-        pairs.emplace_back(u, l);
-    if (!pairs.empty())
-      out << "** lips: gap elements between the facing nodes of the mouth slit (no interpenetration)\n";
-    // On a half model the plane's pairs see only the left faces: their normal is the full model's
-    // (in the plane, by symmetry) once the plane-normal part is removed.
-    std::vector<char> onPlane(mesh.nodes.size(), 0);
-    Point3 planeNormal = Point3::Zero();
-    if (IsHalfModel(mesh))
-    {
-      planeNormal = SymmetryPlaneOf(mesh).normal;
-      for (auto n : mesh.nodeSets.at(kSymmetryBoundarySet))
-        onPlane[static_cast<std::size_t>(n)] = 1;
-    }
-    for (const auto& [u, l] : pairs)
-    {
-      Point3 n = normals[u].normalized();
-      if (onPlane[static_cast<std::size_t>(u)])
-        n = (n - n.dot(planeNormal) * planeNormal).normalized();
-      const std::string set = "G" + std::to_string(++id);
-      out << "*ELEMENT, TYPE=GAPUNI, ELSET=" << set << "\n" << id << ", " << u + 1 << ", " << l + 1 << "\n";
-      out << "*GAP, ELSET=" << set << "\n0., " << FormatDouble(n.x()) << ", " << FormatDouble(n.y()) << ", "
-          << FormatDouble(n.z()) << ", , " << FormatDouble(options.contactStiffness) << ", 1e-7\n";
-    }
-    summary.contactNodes = pairs.size();
-    summary.contactFaces = upperFaces.size();
-  }
-  // The load parameter ("temperature") starts at 0 and is ramped to 1 during the static step.
-  out << "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nNALL, 0.\n";
-  out << "*STEP, NLGEOM, INC=" << step.maxIncrements << "\n*STATIC\n"
-      << FormatDouble(step.initialIncrement) << ", 1., " << FormatDouble(step.minIncrement) << ", "
-      << FormatDouble(step.maxIncrement) << "\n";
-  if (!mandible.empty())
-  {
-    // The mandible's rigid rotation, ramped with the step (exact at its end).
-    const Eigen::Isometry3d rotation = JawRotation(mesh, options.jawAngle);
-    out << "** jaw opening " << FormatDouble(options.jawAngle) << " deg about the condylar axis\n*BOUNDARY\n";
-    for (auto n : mandible)
-    {
-      const Point3& p = mesh.nodes[static_cast<std::size_t>(n)];
-      const Point3 u = rotation * p - p;
-      for (int d = 0; d < 3; ++d)
-        out << n + 1 << ", " << d + 1 << ", " << d + 1 << ", " << FormatDouble(u[d]) << "\n";
-    }
-    summary.jawNodes = mandible.size();
-  }
-  out << "*TEMPERATURE\nNALL, 1.\n*NODE FILE\nU\n*END STEP\n";
+DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, std::ostream& out)
+{
+  DeckSummary summary;
+  const deck::DeckPlan plan = deck::PlanDeck(mesh, options, summary);
+  deck::WriteNodes(mesh, plan, out);
+  deck::WriteSolids(mesh, options, summary, out);
+  deck::WriteCables(mesh, options, plan, summary, out);
+  deck::WriteEmbedding(mesh, plan, summary, out);
+  deck::WriteConstraints(mesh, options, plan, summary, out);
+  deck::WriteLipGaps(mesh, options, plan, summary, out);
+  deck::WriteStep(mesh, options, plan, summary, out);
   return summary;
 }
 

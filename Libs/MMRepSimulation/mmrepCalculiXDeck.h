@@ -1,16 +1,17 @@
 // CalculiX (ccx) input deck for a muscle-activation solve of an FE face model.
 //
 // Units: the mesh is in mm, so forces are N, stresses/moduli N/mm² (= MPa; 1 Pa = 1e-6 N/mm²),
-// the compressibility D N⁻¹mm², the cable stiffness EA N.
+// the compressibility D N⁻¹mm², cable forces N.
 //
 // Model written (Modules/CLI/SimulateMuscleActivation/README.md explains the choices):
 //   * solids: hyperelastic polynomial N=2 (C10, C01, C20, C11, C02, D1, D2), one material per
 //     tissue layer; hexahedra as C3D8/C3D8I/C3D8R, wedges C3D6, tetrahedra C3D4;
-//   * cables: SPRINGA (axial, large-rotation) elements with a non-linear, temperature-dependent
-//     force-elongation curve F = EA/L0 · (e + a·ε·L0) above the active rest length (1 − a·ε)·L0,
-//     0.1 % of that slope below it (slack; see CableModel::slackRatio). The curve is given at
-//     "temperature" 0 (a = 0) and 1 (a = level); the temperature is only a load parameter ramped
-//     0 → 1 over the step (no thermal expansion anywhere), so the activation grows gradually;
+//   * cables: SPRINGA (axial, large-rotation) elements, force N along the fibre. Each cable of a
+//     track carries the Hill-type law of CableForce (active force-length times activation times the
+//     track's maximum force, plus a small stabilising slope), written as a piecewise-linear
+//     force-elongation curve at "temperature" 0 (activation 0) and 1 (the muscle's level); the
+//     temperature is only a load parameter ramped 0 -> 1 over the step (no thermal expansion
+//     anywhere), so the activation grows gradually;
 //   * embedding: every muscle node follows its solid element, u_m − Σ N_i(pcoords) u_i = 0 (three
 //     *EQUATION per node, the element's own shape functions, so it is exact for any deformation);
 //   * fixed nodes (node set "skull" by default; `maxilla` on a model with a jaw): *BOUNDARY 1–3;
@@ -19,14 +20,17 @@
 //   * sliding nodes (optional, e.g. the lips' inner surface on the teeth): n·u = 0 by *EQUATION;
 //   * a half model (mmrepHalfModel.h): its symmetry boundary's solid nodes keep n·u = 0, n the
 //     refitted plane's normal, by *EQUATION too (a node that also slides gets both constraints);
+//   * nodal loads (optional, *CLOAD, ramped with the step), e.g. for element tests;
 //   * one *STEP, NLGEOM, *STATIC with automatic incrementation; *NODE FILE U (.frd).
 #pragma once
 
+#include "mmrepCableLaw.h"
 #include "mmrepFEMesh.h"
+#include "mmrepLipSupport.h"
+#include "mmrepTissue.h"
 
 #include <array>
 #include <cstdint>
-#include <map>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -34,36 +38,11 @@
 namespace mmrep::simulation
 {
 
-// Polynomial hyperelastic coefficients (N/mm²) and compressibilities D1, D2 (mm²/N).
-// Strain energy: W = Σ Cij (I1−3)^i (I2−3)^j + Σ (J−1)^(2k)/Dk.
-struct HyperelasticMaterial
-{
-  double c10 = 0, c01 = 0, c20 = 0, c11 = 0, c02 = 0, d1 = 0, d2 = 0;
-  // Initial shear modulus 2(C10 + C01) and bulk modulus 2/D1 (N/mm²).
-  double ShearModulus() const { return 2 * (c10 + c01); }
-  double BulkModulus() const { return 2 / d1; }
-};
-
-// Nazari et al. 2010 face tissue: C10 = 2500 Pa, C20 = 1175 Pa, in N/mm²; D1 from the Poisson
-// ratio of the initial (small-strain) response: K = 2μ(1+ν)/(3(1−2ν)), D1 = 2/K.
-HyperelasticMaterial FaceTissue(double poissonRatio = 0.49);
-
 // The activated state of one muscle: activation level in [0, 1].
 struct MuscleActivation
 {
   std::string muscle; // name as stored in FEMesh::muscles (case-sensitive)
   double level = 1.0;
-};
-
-struct CableModel
-{
-  double axialStiffness = 5.0; // EA in N: force per unit strain of a cable
-  double maxContraction = 0.3; // ε: active rest length is (1 − a ε) L0 at activation a
-  // Stiffness of the slack branch relative to EA/L0. ccx's non-linear SPRINGA diverges on a branch of
-  // exactly zero stiffness (the first Newton correction is ~100 mm whatever the load), so a slack
-  // cable keeps 0.1 % of its stiffness: in compression it pushes with at most 0.1 % of the force the
-  // same stretch would pull with.
-  double slackRatio = 1e-3;
 };
 
 struct StepControl
@@ -74,30 +53,24 @@ struct StepControl
   int maxIncrements = 100;
 };
 
-// A node that slides on a rigid support: its displacement along `normal` is zero (frictionless,
-// bilateral contact, linearised at the rest position).
-struct SlidingNode
+// A concentrated force (N) on a node of a solid element (*CLOAD), ramped from 0 over the step.
+struct NodalLoad
 {
   std::int32_t node = -1;
-  Point3 normal = Point3::UnitY();
+  Point3 force = Point3::Zero();
 };
-
-// The lips' support by the teeth and gums: the nodes of set "inner" (inner surface where no bone was
-// found) that lie behind the lips, i.e. whose x (left-right) and z (inferior-superior) fall within
-// the bounding box of node set "lips" widened by `margin` mm; normal = area-weighted normal of the
-// inner boundary faces at the node. Empty when the model has no "inner" or "lips" set.
-std::vector<SlidingNode> LipSupportNodes(const FEMesh& mesh, double margin = 5.0);
 
 struct DeckOptions
 {
   // Index = TissueLayer (None, Epidermis, Dermis, Hypodermis); elements of layer None use [0].
   std::array<HyperelasticMaterial, 4> materials{FaceTissue(), FaceTissue(), FaceTissue(), FaceTissue()};
-  std::string hexahedronType = "C3D8"; // C3D8, C3D8I or C3D8R
+  std::string hexahedronType = "C3D8R"; // C3D8R, C3D8I or C3D8 (see the module README: C3D8 locks)
   std::vector<MuscleActivation> activations;
   CableModel cables;
   std::string fixedNodeSet = "skull";
   std::vector<SlidingNode> slidingNodes; // e.g. LipSupportNodes(mesh); fixed nodes among them are skipped
   bool symmetry = true; // a half model: its symmetry boundary's nodes move within the plane
+  std::vector<NodalLoad> loads; // with loads, `activations` may be empty (a purely passive solve)
   StepControl step;
   // Jaw opening (degrees, mmrepJaw.h): on a model with a jaw the `maxilla` nodes are fixed and the
   // `mandible` nodes rotate rigidly about the condylar axis (prescribed displacements, ramped over
@@ -109,6 +82,7 @@ struct DeckOptions
   // `contactStiffness` (N/mm of overclosure per pair).
   bool lipContact = true;
   double contactStiffness = 50.0;
+  bool lipGapNeighbours = false; // also a gap element from each lower node to the upper nodes around its twin
 };
 
 // What the deck contains (for reports and tests).
@@ -129,15 +103,12 @@ std::vector<std::string> MuscleNames(const FEMesh& mesh);
 void CheckActivations(const FEMesh& mesh, const std::vector<MuscleActivation>& activations, bool requireActive = true);
 
 // Writes the deck. Node id = node index + 1; element id = element index + 1. Only the cables of
-// muscles with a positive level are written (inactive cables are slack and carry nothing), with
+// muscles with a positive level are written (inactive cables would only add the small stabilising slope), with
 // their track nodes and equations; other muscle nodes are left out of the deck.
-// Throws std::invalid_argument (see CheckActivations; also an empty or missing fixed node set,
-// an unknown hexahedron type, a muscle node without a valid embedding).
+// Throws std::invalid_argument (see CheckActivations, skipped when there are loads and no
+// activations; also an empty or missing fixed node set, an unknown hexahedron type, a muscle node
+// without a valid embedding, a load on a node that is not a solid's).
 DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, std::ostream& out);
-
-// The cable law at activation `level` (elongation e in mm, force N), with s = e + level·ε·L0:
-// F = EA/L0 · s when s > 0 (taut), EA/L0 · slackRatio · s otherwise (slack).
-double CableForce(const CableModel& model, double restLength, double level, double elongation);
 
 // Shape-function weights of a point with parametric coordinates `pcoords` in a solid element
 // (VTK convention for hexahedra, wedges and tetrahedra), in the element's node order.

@@ -126,7 +126,7 @@ ActivationResult SimulateMuscleActivation(const FEMesh& mesh, const ActivationOp
       const auto n0 = static_cast<std::size_t>(e.nodes[0]), n1 = static_cast<std::size_t>(e.nodes[1]);
       const double L0 = (mesh.nodes[n1] - mesh.nodes[n0]).norm();
       const double L = (mesh.nodes[n1] + result.displacements[n1] - mesh.nodes[n0] - result.displacements[n0]).norm();
-      const double force = CableForce(options.deck.cables, L0, a.level, L - L0);
+      const double force = CableForce(options.deck.cables, track.maximumForce, L0, a.level, L - L0);
       f.meanForce += force / static_cast<double>(track.cables.size());
       f.maxForce = std::max(f.maxForce, force);
       f.restLength += L0;

@@ -187,6 +187,8 @@ inline std::vector<BadInputCase> BadInputCases()
     {"Range_SimulateMuscleActivation", "SimulateMuscleActivation", {"{atlas}", "{d}/s.vtu", "--c10", "-1"}, 2, "c10"},
     {"Range_SimulateMuscleActivation_activations", "SimulateMuscleActivation",
      {"{atlas}", "{d}/s.vtu", "--activations", "1.5"}, 2, "activations"},
+    {"Range_SimulateMuscleActivation_forceScale", "SimulateMuscleActivation",
+     {"{atlas}", "{d}/s.vtu", "--muscles", "ZygomaticusMajor_L", "--forceScale", "0"}, 2, "forceScale"},
     {"Range_SkinSkullSurfaces", "SkinSkullSurfaces", {"{ct}", "{d}/skin.vtp", "{d}/skull.vtp", "--openingRadius", "-1"},
      2, "openingRadius"},
     {"Range_SymmetryPlane", "SymmetryPlane", {"{skin}", "--trimFraction", "0.9"}, 2, "trimFraction"},

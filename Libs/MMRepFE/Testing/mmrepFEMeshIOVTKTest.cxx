@@ -260,6 +260,18 @@ TEST(FEMeshIO, RejectsNonFECells)
   ExpectFileError([&] { ReadFEMesh(path); }, path, "vtkTriangle");
 }
 
+// Files written before the maximum force was stored: their tracks read the documented default.
+TEST(FEMeshIO, MuscleWithoutMaximumForceReadsTheDefault)
+{
+  const FEMesh mesh = MakeTestMesh();
+  auto grid = ToVTK(mesh);
+  ASSERT_NE(grid->GetFieldData()->GetAbstractArray("MMRep.Muscle.orbicularis%20oris.MaximumForce"), nullptr);
+  EXPECT_EQ(FromVTK(grid).muscles.at("orbicularis oris").maximumForce, 0.43);
+  grid->GetFieldData()->RemoveArray("MMRep.Muscle.orbicularis%20oris.MaximumForce");
+  EXPECT_EQ(FromVTK(grid).muscles.at("orbicularis oris").maximumForce, MuscleTrack::kDefaultMaximumForce);
+  EXPECT_EQ(MuscleTrack::kDefaultMaximumForce, 1.0);
+}
+
 TEST(FEMeshIO, InconsistentFieldDataIsRejected)
 {
   const FEMesh mesh = MakeTestMesh();
@@ -290,6 +302,13 @@ TEST(FEMeshIO, InconsistentFieldDataIsRejected)
   {
     auto grid = ToVTK(mesh);
     grid->GetCellData()->GetArray("Layer")->SetTuple1(3, 7);
+    EXPECT_THROW(FromVTK(grid), std::runtime_error);
+  }
+  {
+    auto grid = ToVTK(mesh);
+    auto* force = vtkDataArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("MMRep.Muscle.orbicularis%20oris.MaximumForce"));
+    ASSERT_NE(force, nullptr);
+    force->SetTuple1(0, -1);
     EXPECT_THROW(FromVTK(grid), std::runtime_error);
   }
 }

@@ -71,6 +71,7 @@ inline FEMesh MakeTestMesh()
     oris.cables.push_back(static_cast<std::int32_t>(mesh.elements.size()));
     mesh.elements.push_back(cable); // elements 8, 9
   }
+  oris.maximumForce = 0.43; // N, not the default: the round trip must keep it
   mesh.muscles["orbicularis oris"] = oris;
   // Muscle with an awkward name, one cable from the wedge to the epidermis hex; the wedge point
   // is placed with VTK's wedge interpolation so its embedding is exact.

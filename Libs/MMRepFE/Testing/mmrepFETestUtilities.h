@@ -78,6 +78,7 @@ inline void ExpectSameMesh(const FEMesh& expected, const FEMesh& actual)
     const auto& a = actual.muscles.at(name);
     EXPECT_EQ(m.nodes, a.nodes) << name;
     EXPECT_EQ(m.cables, a.cables) << name;
+    EXPECT_EQ(m.maximumForce, a.maximumForce) << name;
     ASSERT_EQ(m.embedding.size(), a.embedding.size()) << name;
     for (std::size_t k = 0; k < m.embedding.size(); ++k)
     {

@@ -69,8 +69,9 @@ void AddMuscle(FEMesh& mesh, const std::string& name, const std::vector<Point3>&
 
 // One 10 mm hexahedron in uniaxial compression by four vertical cables along its edges: bottom nodes
 // slide on z = 0 (node 0 fixed, node 1 also kept on y = 0), lateral faces free, so the state is
-// homogeneous and, at small strain, the shortening δ solves E δ/L · A = 4 EA_c/L · (a ε L − δ):
-// δ = 4k a ε L / (E A / L + 4k), k = EA_c / L, E = 9Kμ/(3K+μ) from the polynomial law's μ and K.
+// homogeneous and, at small strain s = δ/L, the tissue's force E s A balances the four cables,
+// 4 F(λ = 1 − s) with F the cable law: solved here by bisection; E = 9Kμ/(3K+μ) from the polynomial
+// law's μ and K.
 TEST(Simulation, SingleHexUniaxialMatchesSmallStrainSolution)
 {
   FEMesh mesh = Block(1, 1, 1, 10.0);
@@ -90,6 +91,7 @@ TEST(Simulation, SingleHexUniaxialMatchesSmallStrainSolution)
       t.embedding.push_back(emb);
       mesh.nodes.push_back(p);
     }
+    t.maximumForce = 0.001; // N: about 0.3 % strain
     Element cable;
     cable.type = ElementType::Cable;
     cable.nodes[0] = t.nodes[0];
@@ -104,8 +106,6 @@ TEST(Simulation, SingleHexUniaxialMatchesSmallStrainSolution)
   for (int c = 0; c < 4; ++c)
     options.deck.activations.push_back({"edge" + std::to_string(c), 1.0});
   options.deck.hexahedronType = "C3D8";
-  options.deck.cables.axialStiffness = 0.5;
-  options.deck.cables.maxContraction = 0.001;
   for (int n = 0; n < 4; ++n)
     options.deck.slidingNodes.push_back({n, Point3::UnitZ()});
   options.deck.slidingNodes.push_back({1, Point3::UnitY()});
@@ -118,8 +118,14 @@ TEST(Simulation, SingleHexUniaxialMatchesSmallStrainSolution)
   const sim::HyperelasticMaterial m = sim::FaceTissue();
   const double mu = m.ShearModulus(), K = m.BulkModulus();
   const double E = 9 * K * mu / (3 * K + mu);
-  const double k = options.deck.cables.axialStiffness / L;
-  const double expected = 4 * k * 0.001 * L / (E * A / L + 4 * k);
+  double lo = 0, hi = 0.5; // strain
+  for (int it = 0; it < 100; ++it)
+  {
+    const double s = 0.5 * (lo + hi);
+    (4 * sim::CableForce(options.deck.cables, 0.001, L, 1, -s * L) > E * s * A ? lo : hi) = s;
+  }
+  const double expected = 0.5 * (lo + hi) * L;
+  EXPECT_GT(expected, 0.02); // the cables do shorten the block
   for (int n = 4; n < 8; ++n)
   {
     const double delta = -r.displacements[static_cast<std::size_t>(n)].z();
@@ -150,6 +156,7 @@ TEST(Simulation, BlockMuscleShortensAndIsSymmetric)
   const double h = 5;
   FEMesh mesh = Block(nx, ny, nz, h);
   AddMuscle(mesh, "M", {{2.5, 5, 7.5}, {7.5, 5, 7.5}, {12.5, 5, 7.5}, {17.5, 5, 7.5}}, nx, ny, h);
+  mesh.muscles.at("M").maximumForce = 0.2; // N: the free block is soft
   mesh.Validate();
   sim::ActivationOptions options;
   options.deck.activations = {{"M", 1.0}};
@@ -164,19 +171,38 @@ TEST(Simulation, BlockMuscleShortensAndIsSymmetric)
   EXPECT_NEAR(last.z(), first.z(), 1e-3);
   ASSERT_EQ(r.muscles.size(), 1u);
   EXPECT_LT(r.muscles[0].length, r.muscles[0].restLength);
-  EXPECT_GT(r.muscles[0].length, (1 - options.deck.cables.maxContraction) * r.muscles[0].restLength);
-  EXPECT_GT(r.muscles[0].meanForce, 0);
+  // Shortened on the ascending limb: less than the maximum force, more than half of it.
+  const double fmax = mesh.muscles.at("M").maximumForce;
+  EXPECT_LT(r.muscles[0].meanForce, fmax);
+  EXPECT_GT(r.muscles[0].meanForce, 0.5 * fmax);
+  EXPECT_GT(r.muscles[0].length, 0.5 * r.muscles[0].restLength);
 }
 
-TEST(Simulation, CableLawIsTensionOnly)
+// The Hill-type law against its definition: F = a Fmax f_L(λ) + k Fmax (λ − 1), f_L = exp(−(λ−1)²/γ)
+// below λ = 1 and 1 above, exact at the curve's points, linear in the activation, strictly increasing.
+TEST(Simulation, CableLawIsHillType)
 {
-  sim::CableModel c;
-  c.axialStiffness = 2;
-  c.maxContraction = 0.25;
-  EXPECT_DOUBLE_EQ(sim::CableForce(c, 4, 0, 1), 0.5);        // passive stretch 1 mm: 2/4 · 1
-  EXPECT_DOUBLE_EQ(sim::CableForce(c, 4, 1, 0), 0.5);        // isometric at full activation: 2 · 0.25
-  EXPECT_DOUBLE_EQ(sim::CableForce(c, 4, 1, -1), 0);         // shortened to the active rest length
-  EXPECT_NEAR(sim::CableForce(c, 4, 1, -2), -c.slackRatio * 0.5, 1e-15); // slack: 0.1 % in compression
+  const sim::CableModel c; // γ = 0.45, k = 0.05
+  const double fmax = 3, L0 = 4;
+  EXPECT_DOUBLE_EQ(sim::CableForce(c, fmax, L0, 1, 0), fmax);                               // isometric, optimal length
+  EXPECT_NEAR(sim::CableForce(c, fmax, L0, 1, -0.3 * L0), fmax * (std::exp(-0.09 / 0.45) - 0.015), 1e-12); // λ = 0.7
+  EXPECT_NEAR(sim::CableForce(c, fmax, L0, 0, 0.1 * L0), fmax * 0.005, 1e-12);              // relaxed, stretched 10 %
+  EXPECT_NEAR(sim::CableForce(c, fmax, L0, 1, 0.4 * L0), fmax * 1.02, 1e-12);               // plateau above L0
+  EXPECT_NEAR(sim::CableForce(c, 2 * fmax, L0, 1, 0), 2 * fmax, 1e-12);                     // proportional to Fmax
+  sim::CableModel scaled = c;
+  scaled.forceScale = 2;
+  EXPECT_NEAR(sim::CableForce(scaled, fmax, L0, 1, -1), 2 * sim::CableForce(c, fmax, L0, 1, -1), 1e-12);
+  double previous = -1e300;
+  for (double e = -L0; e <= 2 * L0; e += 0.01)
+  {
+    const double f = sim::CableForce(c, fmax, L0, 0.6, e);
+    EXPECT_NEAR(f, 0.6 * sim::CableForce(c, fmax, L0, 1, e) + 0.4 * sim::CableForce(c, fmax, L0, 0, e), 1e-12);
+    EXPECT_GT(f, previous) << "not increasing at elongation " << e;
+    previous = f;
+  }
+  // The deck's curve is the same law: its points are the function's.
+  for (const auto& [e, f] : sim::CableCurve(c, fmax, L0, 0.6))
+    EXPECT_NEAR(sim::CableForce(c, fmax, L0, 0.6, e), f, 1e-12);
 }
 
 TEST(Simulation, ActivationErrorsAreClear)

@@ -97,12 +97,12 @@ TEST(FaceModelPipelineModule, HalfModelOfTheSpeakerSimulatesTheSymmetricSmileLik
   const std::string fullRet = dir / "full.txt", halfRet = dir / "half.txt";
   const ModuleRun f = RunModuleExecutable("SimulateMuscleActivation",
                                           {(out / "model.vtu").string(), fullOut, "--muscles",
-                                           "ZygomaticusMajor_L,ZygomaticusMajor_R", "--returnparameterfile", fullRet},
+                                           "ZygomaticusMajor_L,ZygomaticusMajor_R", "--elementType", "C3D8", "--returnparameterfile", fullRet},
                                           true);
   ASSERT_EQ(f.exitCode, 0) << f.err;
   const ModuleRun h = RunModuleExecutable(
     "SimulateMuscleActivation",
-    {(out / "half-model.vtu").string(), halfOut, "--muscles", "ZygomaticusMajor_L", "--returnparameterfile", halfRet}, true);
+    {(out / "half-model.vtu").string(), halfOut, "--muscles", "ZygomaticusMajor_L", "--elementType", "C3D8", "--returnparameterfile", halfRet}, true);
   ASSERT_EQ(h.exitCode, 0) << h.err;
   EXPECT_NE(h.out.find("symmetry-plane nodes"), std::string::npos);
   const auto fv = ReadReturnParameters(fullRet), hv = ReadReturnParameters(halfRet);

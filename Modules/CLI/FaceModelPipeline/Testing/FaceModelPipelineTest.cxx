@@ -189,53 +189,8 @@ U
   EXPECT_NE(Slurp(job / "job.frd").find("DISP"), std::string::npos);
 }
 
-// Issues 8 and 13: the DEFAULT speaker model made from the bundled CT (half-face registration with
-// the holding term, no tie), activated with CalculiX. The unregularised registration used to leave
-// the lips' interior, and the orbicularis rings in it, wavy, and a wavy lower ring rolled the lower
-// lip back when it contracted.
-TEST(FaceModelPipelineModule, SpeakerModelMuscleActivationWithCalculiX)
-{
-  ScratchDirectory dir("activation");
-  const fs::path out = dir.path() / "speaker";
-  const ModuleRun pipeline = RunModuleExecutable(
-    "FaceModelPipeline", {kCT, kPoints, "--outputDirectory", out.string(), "--noPictures"});
-  ASSERT_EQ(pipeline.exitCode, 0) << pipeline.err;
-  const std::string model = (out / "model.vtu").string();
-
-  const std::string zyg = dir / "zyg.vtu", zygPng = dir / "zyg.png", zygRet = dir / "zyg.txt";
-  const ModuleRun z = RunModuleExecutable(
-    "SimulateMuscleActivation", {model, zyg, "--muscles", "ZygomaticusMajor_L", "--picture", zygPng, "--returnparameterfile", zygRet},
-    true);
-  ASSERT_EQ(z.exitCode, 0) << z.err;
-  EXPECT_NE(z.out.find("CalculiX: converged"), std::string::npos);
-  const auto zv = ReadReturnParameters(zygRet);
-  const auto corner = ReturnVector(zv, "leftLipCornerDisplacement");
-  std::printf("speaker model, ZygomaticusMajor_L: LeftLipCorner lateral (+x) %.3f, superior (+z) %.3f mm; ccx %s s\n", corner[0],
-              corner[2], zv.at("ccxSeconds").c_str());
-  EXPECT_GT(corner[0], 0.05); // patient left = lateral for the left corner
-  EXPECT_GT(corner[2], 0.05); // upward
-  EXPECT_TRUE(IsPNG(zygPng));
-
-  const std::string oop = dir / "oop.vtu", oopRet = dir / "oop.txt", oopPng = dir / "oop-lips.png";
-  const ModuleRun o = RunModuleExecutable(
-    "SimulateMuscleActivation",
-    {model, oop, "--muscles",
-     "OrbicularisOrisPeripheralisUpper_L,OrbicularisOrisPeripheralisUpper_R,OrbicularisOrisPeripheralisLower_L,"
-     "OrbicularisOrisPeripheralisLower_R",
-     "--lipsPicture", oopPng, "--returnparameterfile", oopRet},
-    true);
-  ASSERT_EQ(o.exitCode, 0) << o.err;
-  const auto ov = ReadReturnParameters(oopRet);
-  const auto upper = ReturnVector(ov, "upperLipCenterDisplacement"), lower = ReturnVector(ov, "lowerLipCenterDisplacement");
-  std::printf("speaker model, orbicularis oris peripheralis: upper lip anterior %.3f mm, lower lip anterior %.3f mm, gap change "
-              "%.3f mm\n",
-              -upper[1], -lower[1], upper[2] - lower[2]);
-  EXPECT_NE(o.out.find("CalculiX: converged"), std::string::npos);
-  EXPECT_LT(upper[1], -0.05);            // both lip centres go forward (anterior is -y in LPS): protrusion
-  EXPECT_LT(lower[1], -0.05);
-  EXPECT_LT(upper[2] - lower[2], -0.05); // and toward each other
-  EXPECT_TRUE(IsPNG(oopPng));
-}
+// The default speaker model's gestures (smile, rounding, jaw opening) with CalculiX: SpeechGestures.*
+// (FaceModelGesturesTest.cxx).
 
 // Bad input: one line on stderr, exit code 1, and no output directory presented as a result.
 void ExpectCleanFailure(const ModuleRun& run, const fs::path& out, const std::string& message)

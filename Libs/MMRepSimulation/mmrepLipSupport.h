@@ -1,0 +1,26 @@
+// The lips' support by the teeth and gums: nodes that slide on a rigid surface.
+#pragma once
+
+#include "mmrepFEMesh.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace mmrep::simulation
+{
+
+// A node that slides on a rigid support: its displacement along `normal` is zero (frictionless,
+// bilateral contact, linearised at the rest position).
+struct SlidingNode
+{
+  std::int32_t node = -1;
+  Point3 normal = Point3::UnitY();
+};
+
+// The nodes of set "inner" (inner surface where no bone was found) that lie behind the lips, i.e.
+// whose x (left-right) and z (inferior-superior) fall within the bounding box of node set "lips"
+// widened by `margin` mm; normal = area-weighted normal of the inner boundary faces at the node.
+// Empty when the model has no "inner" or "lips" set.
+std::vector<SlidingNode> LipSupportNodes(const FEMesh& mesh, double margin = 5.0);
+
+} // namespace mmrep::simulation
