@@ -82,7 +82,6 @@ struct DeckOptions
   // `contactStiffness` (N/mm of overclosure per pair).
   bool lipContact = true;
   double contactStiffness = 50.0;
-  bool lipGapNeighbours = false; // also a gap element from each lower node to the upper nodes around its twin
 };
 
 // What the deck contains (for reports and tests).

@@ -8,11 +8,9 @@
 
 #include <Eigen/Geometry>
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
-#include <set>
 #include <stdexcept>
 #include <utility>
 
@@ -157,40 +155,15 @@ void WriteLipGaps(const FEMesh& mesh, const DeckOptions& options, const DeckPlan
     for (auto n : mesh.nodeSets.at(kSymmetryBoundarySet))
       onPlane[static_cast<std::size_t>(n)] = 1;
   }
-  // Each lower node also faces the upper nodes around its twin (those sharing an upper facing face):
-  // a gap element to each, along that node's normal, keeps the lower lip out of the upper one while
-  // the lips slide along each other by up to an element. Clearance: the rest distance along the normal.
-  std::map<std::int32_t, std::set<std::int32_t>> around;
-  for (const auto& f : upperFaces)
-    for (auto a : f.nodes)
-      for (auto b : f.nodes)
-        if (a != b)
-          around[a].insert(b);
-  auto normalAt = [&](std::int32_t u) {
+  for (const auto& [u, l] : pairs)
+  {
     Point3 n = normals[u].normalized();
     if (onPlane[static_cast<std::size_t>(u)])
       n = (n - n.dot(planeNormal) * planeNormal).normalized();
-    return n;
-  };
-  auto writeGap = [&](std::int32_t u, std::int32_t l, const Point3& n, double clearance) {
     const std::string set = "G" + std::to_string(++id);
     out << "*ELEMENT, TYPE=GAPUNI, ELSET=" << set << "\n" << id << ", " << u + 1 << ", " << l + 1 << "\n";
-    out << "*GAP, ELSET=" << set << "\n" << (clearance == 0 ? "0." : FormatDouble(clearance)) << ", " << FormatDouble(n.x()) << ", "
-        << FormatDouble(n.y()) << ", " << FormatDouble(n.z()) << ", , " << FormatDouble(options.contactStiffness)
-        << ", 1e-7\n";
-  };
-  for (const auto& [u, l] : pairs)
-  {
-    writeGap(u, l, normalAt(u), 0);
-    if (!options.lipGapNeighbours)
-      continue;
-    for (auto v : around[u])
-    {
-      if (!plan.used[static_cast<std::size_t>(v)] || !(normals[v].norm() > 0))
-        continue;
-      const Point3 n = normalAt(v);
-      writeGap(v, l, n, std::max(0.0, n.dot(mesh.nodes[static_cast<std::size_t>(l)] - mesh.nodes[static_cast<std::size_t>(v)])));
-    }
+    out << "*GAP, ELSET=" << set << "\n0., " << FormatDouble(n.x()) << ", " << FormatDouble(n.y()) << ", "
+        << FormatDouble(n.z()) << ", , " << FormatDouble(options.contactStiffness) << ", 1e-7\n";
   }
   summary.contactNodes = pairs.size();
   summary.contactFaces = upperFaces.size();
