@@ -2,7 +2,7 @@
 // The full skin of a CT (as SkinSkullSurfaces extracts it) decimated to `vertices` by VTK's
 // vtkQuadricDecimation (what SkinSkullSurfaces uses) and by OpenMesh's Decimater with ModQuadric and an
 // Observer (progress, abort), the OpenMesh run including the conversions through Libs/MMRepBridge. Prints
-// time and the distances between the decimated and the full surface both ways (VTK's cell locator).
+// CPU time and the distances between the decimated and the full surface both ways (VTK's cell locator).
 #include "mmrepBridge.h"
 #include "mmrepCTThresholds.h"
 #include "mmrepHeadSegmentation.h"
@@ -19,7 +19,7 @@
 #include <vtkStaticCellLocator.h>
 
 #include <algorithm>
-#include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -28,11 +28,12 @@
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
+// Process CPU time: both decimations run on one thread, and CPU time does not depend on the machine's load.
+using Clock = std::clock_t;
 
-double Seconds(Clock::time_point start)
+double Seconds(Clock start)
 {
-  return std::chrono::duration<double>(Clock::now() - start).count();
+  return static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
 }
 
 struct Distances
@@ -77,7 +78,7 @@ void Print(const std::string& name, double seconds, vtkPolyData* decimated, vtkP
 {
   const Distances a = PointsToSurface(decimated, full);
   const Distances b = PointsToSurface(full, decimated);
-  std::cout << name << ": " << seconds << " s, " << decimated->GetNumberOfPoints() << " vertices, "
+  std::cout << name << ": " << seconds << " s CPU, " << decimated->GetNumberOfPoints() << " vertices, "
             << decimated->GetNumberOfPolys() << " triangles; decimated -> full " << a.mean << " mm mean, " << a.max
             << " mm max; full -> decimated " << b.mean << " mm mean, " << b.max << " mm max\n";
 }
@@ -101,7 +102,7 @@ int main(int argc, char* argv[])
     std::cout << "skin of " << path << ": " << n << " vertices, " << full->GetNumberOfPolys() << " triangles; target "
               << target << " vertices\n";
 
-    auto start = Clock::now();
+    auto start = std::clock();
     vtkNew<vtkQuadricDecimation> vtk;
     vtk->SetInputData(full);
     vtk->SetTargetReduction(1.0 - static_cast<double>(target) / static_cast<double>(n));
@@ -109,7 +110,7 @@ int main(int argc, char* argv[])
     vtk->Update();
     Print("vtkQuadricDecimation (volume preservation)", Seconds(start), vtk->GetOutput(), full);
 
-    start = Clock::now();
+    start = std::clock();
     std::size_t skipped = 0;
     mmrep::TriMesh mesh = mmrep::PolyDataToOpenMesh(full, &skipped);
     const double toOpenMesh = Seconds(start);
@@ -125,7 +126,7 @@ int main(int argc, char* argv[])
     mesh.garbage_collection();
     const auto om = mmrep::OpenMeshToPolyData(mesh);
     Print("OpenMesh Decimater + ModQuadric (with the VTK <-> OpenMesh copies)", Seconds(start), om, full);
-    std::cout << "  of which VTK -> OpenMesh " << toOpenMesh << " s; " << skipped << " non-manifold faces skipped; "
+    std::cout << "  of which VTK -> OpenMesh " << toOpenMesh << " s CPU; " << skipped << " non-manifold faces skipped; "
               << observer.steps_ << " collapses notified\n";
   }
   catch (const std::exception& e)
