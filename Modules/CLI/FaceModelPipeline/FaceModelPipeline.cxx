@@ -4,37 +4,20 @@
 #include "FaceModelOutputDirectory.h"
 #include "mmrepCLI.h"
 #include "mmrepDisplacementFieldMap.h"
-#include "mmrepFEMeshIO.h"
-#include "mmrepFaceModelPictures.h"
+#include "mmrepFaceModelOutputs.h"
 #include "mmrepFaceModelPipeline.h"
-#include "mmrepFaceModelReport.h"
-#include "mmrepHalfModel.h"
+#include "mmrepFEMeshIO.h"
 #include "mmrepImageIO.h"
 #include "mmrepLandmarkIO.h"
 #include "mmrepSnapshot.h"
-#include "mmrepSurfaceIO.h"
 
-#include <chrono>
-#include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <limits>
 
 extern const char FaceModelPipelineXML[];
 
 namespace
 {
 using mmrep::cli::ModuleError;
-namespace fs = std::filesystem;
-
-void WriteText(const fs::path& path, const std::string& text)
-{
-  std::ofstream f(path, std::ios::binary);
-  f << text;
-  if (!f)
-    throw ModuleError(path.string() + ": cannot write");
-}
 
 void Run(mmrep::cli::ModuleContext& ctx)
 {
@@ -99,92 +82,30 @@ void Run(mmrep::cli::ModuleContext& ctx)
             << " inverted, " << result.qualityAfterQ.belowThreshold << " below " << qualityThreshold
             << "; repaired: min " << result.repair.minScaledJacobianAfter << " in " << result.repair.seconds
             << " s" << std::endl;
-  // Files.
-  const fs::path dir = out.StagingPath();
-  std::vector<std::pair<std::string, std::string>> files = {
-    {"model.vtu", "FE model for VTK/ParaView/Slicer: layers, node and element sets, muscles with embedding, landmarks"},
-    {"model.inp", "FE model for CalculiX/Abaqus (*NSET/*ELSET per set, layer and muscle)"},
-    {"model.feb", "FE model for FEBio (NodeSet/ElementSet)"},
-    {"model.msh", "FE model for Gmsh (physical groups)"},
-    {"transform.nrrd", "displacement field u(x) = Q(R(x)) - x over the atlas, atlas to speaker (LPS mm)"},
-    {"skin.vtp", "the speaker's skin surface from the CT"},
-    {"skull.vtp", "the speaker's skull surface from the CT"},
-    {"landmarks.mrk.json", "the model's landmarks (atlas landmarks through Q∘R)"},
-    {"report.json", "accuracy, quality, muscles and times (machine-readable)"},
-    {"report.md", "the same as tables"}};
-  if (pictures)
-  {
-    files.emplace_back("model-skin-error.png", "model skin coloured by distance to the speaker's skin, front and left");
-    files.emplace_back("lips.png", "lips close-up, front and left");
-    files.emplace_back("muscles.png", "the speaker's inferred muscle tracks, front and left");
-  }
-  for (const char* format : {"vtu", "inp", "feb", "msh"})
-    mmrep::WriteFEMesh(result.model, (dir / (std::string("model.") + format)).string(), format);
-  if (args.Bool("halfModel"))
-  {
-    files.emplace_back("half-model.vtu", "the left half of the model, symmetry boundary in node set symmetryBoundary (also .inp, .feb, .msh)");
-    const auto half = mmrep::LeftHalfModel(result.model);
-    for (const char* format : {"vtu", "inp", "feb", "msh"})
-      mmrep::WriteFEMesh(half, (dir / (std::string("half-model.") + format)).string(), format);
-  }
-  ctx.progress.Report(0.88);
-  const auto field = mmrep::SampleDisplacementField([&](const mmrep::Point3& x) { return result.AtlasToSubject(x); },
-                                                    atlas.nodes, 10.0, args.Double("transformSpacing"));
-  mmrep::WriteDisplacementField(field, (dir / "transform.nrrd").string());
-  mmrep::WriteSurface(result.skin, (dir / "skin.vtp").string());
-  mmrep::WriteSurface(result.skull, (dir / "skull.vtp").string());
-  mmrep::WriteLandmarks(result.model.landmarks, (dir / "landmarks.mrk.json").string());
-  ctx.progress.Report(0.92);
-  if (pictures)
-  {
-    mmrep::WriteModelErrorPicture(result, (dir / "model-skin-error.png").string());
-    mmrep::WriteLipsPicture(result, (dir / "lips.png").string());
-    mmrep::WriteMusclesPicture(result.model, result.skin, (dir / "muscles.png").string(),
-                               "inferred muscle tracks (one colour per muscle) in the speaker's face");
-  }
-  mmrep::FaceModelReportInputs inputs;
-  inputs.ct = args.String("inputVolume");
-  inputs.controlPoints = args.String("controlPoints");
-  inputs.atlas = atlasPath;
-  inputs.repairThreshold = qualityThreshold;
-  inputs.files = files;
-  WriteText(dir / "report.json", mmrep::FaceModelReportJson(result, inputs));
-  WriteText(dir / "report.md", mmrep::FaceModelReportMarkdown(result, inputs));
-  if (args.Bool("intermediates"))
-  {
-    mmrep::WriteFEMesh(result.registered, (dir / "registered.vtu").string());
-    mmrep::WriteFEMesh(result.refined, (dir / "refined.vtu").string());
-  }
+  mmrep::FaceModelOutputOptions output;
+  output.pictures = pictures;
+  output.halfModel = args.Bool("halfModel");
+  output.intermediates = args.Bool("intermediates");
+  output.transformSpacing = args.Double("transformSpacing");
+  output.report.ct = args.String("inputVolume");
+  output.report.controlPoints = args.String("controlPoints");
+  output.report.atlas = atlasPath;
+  output.report.repairThreshold = qualityThreshold;
+  mmrep::WriteFaceModelOutputs(result, atlas, output, out.StagingPath(),
+                               [&](double f) { ctx.progress.ReportRange(0.85, 0.95, f); });
   out.Commit();
+  // A model below the quality threshold fails the run and publishes nothing (an earlier result stays as it was).
   if (!result.repair.success)
-  {
-    // The model does not meet the quality threshold: the run fails and publishes nothing (an
-    // earlier result in the output directory stays as it was).
-    std::string worst;
-    for (std::size_t i = 0; i < result.repair.failedElements.size() && i < 5; ++i)
-      worst += (i ? ", " : "") + std::to_string(result.repair.failedElements[i]) + " (" +
-               std::to_string(result.repair.failedValues[i]) + ")";
-    throw ModuleError("repair could not bring every element to scaled Jacobian " + std::to_string(qualityThreshold) +
-                      ": " + std::to_string(result.repair.failedElements.size()) + " elements remain below (worst: " +
-                      worst + "); nothing written to " + out.FinalPath().string() +
-                      " (lower --qualityThreshold or check the control points)");
-  }
+    throw ModuleError(mmrep::RepairFailureMessage(result, qualityThreshold, out.FinalPath()));
 
   const auto& a = result.accuracy.back();
-  double cpMean = 0;
-  for (double e : a.controlErrors)
-    cpMean += e / static_cast<double>(a.controlErrors.size());
-  std::cout << "Model: " << result.model.nodes.size() << " nodes, " << result.model.SolidElementCount()
-            << " solid elements; fitted " << result.fitted << ": skin " << a.skinHalf.mean << " mm mean, skull "
-            << a.skullHalf.mean << " mm mean, lips " << a.lipsHalf.max << " mm max (whole model: skin " << a.skin.mean
-            << ", skull " << a.skull.mean << ", lips max " << a.lips.max << "); control points " << cpMean << " mm mean; min scaled Jacobian "
-            << result.repair.minScaledJacobianAfter << "; " << result.totalSeconds << " s\n"
+  std::cout << mmrep::FaceModelSummary(result) << "\n"
             << "Results in " << out.FinalPath() << " (report.md, model.vtu/.inp/.feb/.msh"
             << (pictures ? ", pictures *.png" : "") << ")" << std::endl;
   ctx.outputs.Set("skinMeanError", a.skin.mean);
   ctx.outputs.Set("skullMeanError", a.skull.mean);
   ctx.outputs.Set("lipsMaxError", a.lips.max);
-  ctx.outputs.Set("controlPointMeanError", cpMean);
+  ctx.outputs.Set("controlPointMeanError", mmrep::ControlPointMeanError(result));
   ctx.outputs.Set("minScaledJacobian", result.repair.minScaledJacobianAfter);
   ctx.outputs.Set("seconds", result.totalSeconds);
   ctx.progress.End();

@@ -188,6 +188,16 @@ private:
   void
   FirstAxisPass(const Context & c, const OutputImageRegionType & region, bool & anyForeground, bool & anyFeature) const;
 
+  // Signed distance: flags in `boundary` the foreground pixels of the x-line at `in` (index: its position, fg: its
+  // foreground flags) that have a background pixel among their neighbours; nearBackground is nx + 2 scratch.
+  void
+  FlagBoundary(const Context &        c,
+               const InputPixelType * in,
+               const IndexValueType * index,
+               const unsigned char *  fg,
+               unsigned char *        nearBackground,
+               unsigned char *        boundary) const;
+
   // Lower-envelope pass along axis d >= 1.
   template <bool VTrackNearest>
   void

@@ -3,7 +3,6 @@
 #pragma once
 
 #include "mmrepImageIO.h"
-#include "mmrepImageIO.h"
 #include "mmrepSyntheticWarp.h"
 
 #include <functional>

@@ -2,6 +2,7 @@
 #define itkMarchingCubesImageToMeshFilter_h
 
 #include "itkImageToMeshFilter.h"
+#include "itkMarchingCubesSliceWriter.h"
 #include "itkMarchingCubesTables.h"
 
 namespace itk
@@ -88,6 +89,9 @@ private:
   // Runs the three passes on a dense nx*ny*nz block of values whose voxel (0,0,0) has continuous index `start`.
   void
   Contour(const InputPixelType * values, const std::array<SizeValueType, 3> & size, const std::array<double, 3> & start);
+  // Continuous index relative to `start` -> physical point, from the input's origin, spacing and direction.
+  MarchingCubesDetail::IndexToPhysical
+  IndexToPhysicalMap(const std::array<double, 3> & start);
 
   double m_IsoValue{ 0.0 };
   bool   m_PadBoundary{ false };

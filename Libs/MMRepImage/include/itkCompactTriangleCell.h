@@ -1,7 +1,8 @@
 // A triangle cell that keeps its three point ids inline, so that millions of them can live in one array.
 //
 // Why: itk::TriangleCell (ITK 5.2) stores its ids in a std::vector, so every triangle costs two heap
-// allocations; for a CT iso-surface (~600k triangles) that alone takes longer than VTK's whole Flying Edges run.
+// allocations, which for a CT iso-surface of hundreds of thousands of triangles dominates the filter's run
+// (figures: Libs/MMRepImage/README.md).
 // A CompactTriangleCell reports itself as a TRIANGLE_CELL and answers every query by delegating to a temporary
 // itk::TriangleCell holding the same ids: copies (MakeCopy), boundary features and visitors (Accept) therefore
 // see ordinary itk::TriangleCell objects. Only code that dynamic_casts a mesh cell to itk::TriangleCell sees
