@@ -4,6 +4,7 @@
 //   points                                   vtkDoubleArray, node i = point i (bit-exact doubles)
 //   cells                                    element i = cell i, VTK_LINE/TETRA/HEXAHEDRON/WEDGE
 //   cell data   "Layer"                      int: TissueLayer value (0 none, 1 epidermis, 2 dermis, 3 hypodermis)
+//   point data  "MMRep.Mirror"               int: mirror partner of each node (FEMesh::mirror), when known
 //   field data  "MMRep.Version"              int: 1
 //               "MMRep.NodeSet.<name>"       int: node indices, in set order
 //               "MMRep.ElementSet.<name>"    int: element indices, in set order
@@ -41,6 +42,7 @@ namespace
 {
 
 const std::string kPrefix = "MMRep.";
+const std::string kMirrorArray = kPrefix + "Mirror";
 
 std::string EncodeName(const std::string& name)
 {
@@ -104,7 +106,7 @@ std::vector<std::int32_t> ReadInts(vtkAbstractArray* abstract)
 {
   auto* array = vtkDataArray::SafeDownCast(abstract);
   if (!array || array->GetNumberOfComponents() != 1)
-    throw std::runtime_error("field data array '" + std::string(abstract->GetName()) +
+    throw std::runtime_error("data array '" + std::string(abstract->GetName()) +
                              "' must be a numeric array with one component");
   std::vector<std::int32_t> values(static_cast<std::size_t>(array->GetNumberOfTuples()));
   for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
@@ -112,7 +114,7 @@ std::vector<std::int32_t> ReadInts(vtkAbstractArray* abstract)
     const double v = array->GetComponent(i, 0);
     if (!(v == std::floor(v)) || v < std::numeric_limits<std::int32_t>::min() ||
         v > std::numeric_limits<std::int32_t>::max())
-      throw std::runtime_error("field data array '" + std::string(array->GetName()) + "' holds " +
+      throw std::runtime_error("data array '" + std::string(array->GetName()) + "' holds " +
                                std::to_string(v) + ", not an index");
     values[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(v);
   }
@@ -123,7 +125,7 @@ vtkDataArray* Vectors(vtkAbstractArray* abstract)
 {
   auto* array = vtkDataArray::SafeDownCast(abstract);
   if (!array || array->GetNumberOfComponents() != 3)
-    throw std::runtime_error("field data array '" + std::string(abstract->GetName()) +
+    throw std::runtime_error("data array '" + std::string(abstract->GetName()) +
                              "' must be a numeric array with three components");
   return array;
 }
@@ -163,6 +165,9 @@ vtkSmartPointer<vtkUnstructuredGrid> ToVTK(const FEMesh& mesh)
     layers->SetValue(static_cast<vtkIdType>(i), static_cast<int>(e.layer));
   }
   grid->GetCellData()->AddArray(layers);
+
+  if (mesh.HasMirrorMap())
+    grid->GetPointData()->AddArray(IntArray(kMirrorArray, mesh.mirror));
 
   vtkFieldData* field = grid->GetFieldData();
   field->AddArray(IntArray(kPrefix + "Version", {1}));
@@ -229,6 +234,13 @@ FEMesh FromVTK(vtkUnstructuredGrid* grid)
     grid->GetPoint(i, mesh.nodes[static_cast<std::size_t>(i)].data());
     if (!mesh.nodes[static_cast<std::size_t>(i)].allFinite())
       throw std::runtime_error("point " + std::to_string(i) + " has a NaN or infinite coordinate");
+  }
+
+  if (vtkAbstractArray* mirror = grid->GetPointData()->GetAbstractArray(kMirrorArray.c_str()))
+  {
+    if (mirror->GetNumberOfTuples() != pointCount)
+      throw std::runtime_error("point data '" + kMirrorArray + "' must have one value per point");
+    mesh.mirror = ReadInts(mirror);
   }
 
   vtkDataArray* layers = grid->GetCellData()->GetArray("Layer");
