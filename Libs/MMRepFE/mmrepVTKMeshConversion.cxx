@@ -135,6 +135,39 @@ bool StartsWith(const std::string& s, const std::string& prefix)
   return s.compare(0, prefix.size(), prefix) == 0;
 }
 
+// Cells as elements (the four FE cell types only), with their layers.
+void ReadElements(vtkUnstructuredGrid* grid, FEMesh& mesh)
+{
+  vtkDataArray* layers = grid->GetCellData()->GetArray("Layer");
+  if (layers && (layers->GetNumberOfComponents() != 1 || layers->GetNumberOfTuples() != grid->GetNumberOfCells()))
+    throw std::runtime_error("cell data 'Layer' must have one value per cell");
+  vtkNew<vtkIdList> ids;
+  mesh.elements.resize(static_cast<std::size_t>(grid->GetNumberOfCells()));
+  for (vtkIdType i = 0; i < grid->GetNumberOfCells(); ++i)
+  {
+    Element& e = mesh.elements[static_cast<std::size_t>(i)];
+    const int type = grid->GetCellType(i);
+    if (type != VTK_LINE && type != VTK_TETRA && type != VTK_HEXAHEDRON && type != VTK_WEDGE)
+      throw std::runtime_error("cell " + std::to_string(i) + " is a " + vtkCellTypes::GetClassNameFromTypeId(type) +
+                               "; only lines, tetrahedra, hexahedra and wedges are FE elements");
+    e.type = static_cast<ElementType>(type);
+    grid->GetCellPoints(i, ids);
+    if (ids->GetNumberOfIds() != NodeCount(e.type))
+      throw std::runtime_error("cell " + std::to_string(i) + " has " + std::to_string(ids->GetNumberOfIds()) +
+                               " points for a " + ElementTypeName(e.type));
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      e.nodes[static_cast<std::size_t>(k)] = static_cast<std::int32_t>(ids->GetId(k));
+    if (layers)
+    {
+      const double layer = layers->GetComponent(i, 0);
+      if (!(layer == 0 || layer == 1 || layer == 2 || layer == 3))
+        throw std::runtime_error("cell " + std::to_string(i) + " has layer " + std::to_string(layer) +
+                                 " (expected 0 to 3)");
+      e.layer = static_cast<TissueLayer>(static_cast<int>(layer));
+    }
+  }
+}
+
 } // namespace
 
 vtkSmartPointer<vtkUnstructuredGrid> ToVTK(const FEMesh& mesh)
@@ -243,34 +276,7 @@ FEMesh FromVTK(vtkUnstructuredGrid* grid)
     mesh.mirror = ReadInts(mirror);
   }
 
-  vtkDataArray* layers = grid->GetCellData()->GetArray("Layer");
-  if (layers && (layers->GetNumberOfComponents() != 1 || layers->GetNumberOfTuples() != grid->GetNumberOfCells()))
-    throw std::runtime_error("cell data 'Layer' must have one value per cell");
-  vtkNew<vtkIdList> ids;
-  mesh.elements.resize(static_cast<std::size_t>(grid->GetNumberOfCells()));
-  for (vtkIdType i = 0; i < grid->GetNumberOfCells(); ++i)
-  {
-    Element& e = mesh.elements[static_cast<std::size_t>(i)];
-    const int type = grid->GetCellType(i);
-    if (type != VTK_LINE && type != VTK_TETRA && type != VTK_HEXAHEDRON && type != VTK_WEDGE)
-      throw std::runtime_error("cell " + std::to_string(i) + " is a " + vtkCellTypes::GetClassNameFromTypeId(type) +
-                               "; only lines, tetrahedra, hexahedra and wedges are FE elements");
-    e.type = static_cast<ElementType>(type);
-    grid->GetCellPoints(i, ids);
-    if (ids->GetNumberOfIds() != NodeCount(e.type))
-      throw std::runtime_error("cell " + std::to_string(i) + " has " + std::to_string(ids->GetNumberOfIds()) +
-                               " points for a " + ElementTypeName(e.type));
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-      e.nodes[static_cast<std::size_t>(k)] = static_cast<std::int32_t>(ids->GetId(k));
-    if (layers)
-    {
-      const double layer = layers->GetComponent(i, 0);
-      if (!(layer == 0 || layer == 1 || layer == 2 || layer == 3))
-        throw std::runtime_error("cell " + std::to_string(i) + " has layer " + std::to_string(layer) +
-                                 " (expected 0 to 3)");
-      e.layer = static_cast<TissueLayer>(static_cast<int>(layer));
-    }
-  }
+  ReadElements(grid, mesh);
 
   vtkFieldData* field = grid->GetFieldData();
   struct EmbeddingArrays
