@@ -398,6 +398,7 @@ FaceAtlas BuildFaceAtlas(vtkPolyData* skinWorld, vtkPolyData* skullWorld, const 
     mesh = FEMesh();
     mesh.nodes.resize(grid.LeftNodeCount() + rows * (cols - 1) * 4);
     writeNodesFromLeftHalf();
+    mesh.mirror = grid.MirrorMap();
     mesh.elements.resize(2 * grid.LeftElementCount());
     for (int side = 0; side < 2; ++side)
       for (int i = 0; i + 1 < rows; ++i)

@@ -41,6 +41,20 @@ struct FaceGrid
       return LeftNode(i, j, k);
     return LeftNodeCount() + (i * (Cols() - 1) + (j - 1)) * 4 + k;
   }
+  // The grid's mirror map (FEMesh::mirror): node (i, j, k) of one side <-> the other side's.
+  std::vector<std::int32_t> MirrorMap() const
+  {
+    std::vector<std::int32_t> mirror(static_cast<std::size_t>(LeftNodeCount() + Rows() * (Cols() - 1) * 4));
+    for (int i = 0; i < Rows(); ++i)
+      for (int j = 0; j < Cols(); ++j)
+        for (int k = 0; k < 4; ++k)
+        {
+          const int left = Node(i, j, k, 0), right = Node(i, j, k, 1);
+          mirror[static_cast<std::size_t>(left)] = right;
+          mirror[static_cast<std::size_t>(right)] = left;
+        }
+    return mirror;
+  }
   int Element(int i, int j, int layer, int side) const
   {
     return side * LeftElementCount() + (i * (Cols() - 1) + j) * 3 + layer;

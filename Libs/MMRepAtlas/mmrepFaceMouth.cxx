@@ -63,6 +63,10 @@ std::size_t CutMouthSlit(FEMesh& mesh, const FaceGrid& grid, const MouthSlitCell
         twin[n] = t;
         lowerContact.push_back(t);
       }
+  // A twin mirrors its partner's mirror's twin (the slit is cut on both sides alike).
+  for (const auto& [node, t] : twin)
+    if (mesh.HasMirrorMap())
+      mesh.SetMirrorPartners(t, twin.at(mesh.mirror[static_cast<std::size_t>(node)]));
   auto& upperLip = mesh.elementSets[kUpperLipSet];
   auto& lowerLip = mesh.elementSets[kLowerLipSet];
   for (int side = 0; side < 2; ++side)
@@ -124,6 +128,7 @@ std::string AddJaw(FEMesh& mesh, vtkPolyData* skullLocal, const FaceFrame& frame
   mesh.nodes.push_back(left);
   mesh.nodes.push_back(right);
   mesh.nodeSets[kJawAxisSet] = {leftNode, leftNode + 1};
+  mesh.SetMirrorPartners(leftNode, leftNode + 1);
 
   const Point3 stomion = frame.ToWorld(landmarks.stomion.local);
   Point3 normal = (right - left).cross(stomion - left).normalized();

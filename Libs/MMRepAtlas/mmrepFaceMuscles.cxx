@@ -187,6 +187,11 @@ void AddFaceMuscles(FEMesh& mesh, const FaceGrid& grid, const FaceFrame& frame, 
       }
       mesh.muscles[name] = muscle;
     }
+    // Point n of the left track mirrors point n of the right one (shared on the plane).
+    const auto& left = mesh.muscles[rule.name + "_L"].nodes;
+    const auto& right = mesh.muscles[rule.name + "_R"].nodes;
+    for (std::size_t n = 0; n < left.size(); ++n)
+      mesh.SetMirrorPartners(left[n], right[n]);
   }
 }
 

@@ -1,5 +1,6 @@
 #include "mmrepFEMesh.h"
 
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -59,6 +60,20 @@ std::vector<std::int32_t> FEMesh::SolidElementsOfLayer(TissueLayer layer) const
   return ids;
 }
 
+void FEMesh::SetMirrorPartners(std::int32_t a, std::int32_t b)
+{
+  if (mirror.empty())
+    return;
+  const std::size_t known = mirror.size();
+  if (known < nodes.size())
+  {
+    mirror.resize(nodes.size());
+    std::iota(mirror.begin() + static_cast<std::ptrdiff_t>(known), mirror.end(), static_cast<std::int32_t>(known));
+  }
+  mirror.at(static_cast<std::size_t>(a)) = b;
+  mirror.at(static_cast<std::size_t>(b)) = a;
+}
+
 void FEMesh::Validate() const
 {
   const auto nodeCount = static_cast<std::int64_t>(nodes.size());
@@ -75,6 +90,13 @@ void FEMesh::Validate() const
         throw std::invalid_argument("element " + std::to_string(i) + " refers to node " +
                                     std::to_string(e.nodes[k]) + " of " + std::to_string(nodeCount));
   }
+  if (!mirror.empty() && mirror.size() != nodes.size())
+    throw std::invalid_argument("mirror map has " + std::to_string(mirror.size()) + " entries for " +
+                                std::to_string(nodes.size()) + " nodes");
+  for (std::size_t i = 0; i < mirror.size(); ++i)
+    if (mirror[i] < 0 || mirror[i] >= nodeCount || mirror[static_cast<std::size_t>(mirror[i])] != static_cast<std::int32_t>(i))
+      throw std::invalid_argument("mirror map: node " + std::to_string(i) + " has partner " + std::to_string(mirror[i]) +
+                                  " whose partner is not node " + std::to_string(i));
   for (const auto& [name, ids] : nodeSets)
     for (auto id : ids)
       if (id < 0 || id >= nodeCount)

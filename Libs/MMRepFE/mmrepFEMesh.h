@@ -84,13 +84,22 @@ public:
   std::map<std::string, std::vector<std::int32_t>> elementSets; // epidermis, …, muscle names
   std::map<std::string, MuscleTrack> muscles;
   std::vector<Landmark> landmarks; // ordered as given (control points keep their order)
+  // Mirror map about the mid-sagittal plane, known when a symmetric atlas is built: mirror[i] is the
+  // node at the mirror image of node i (i itself on the plane); an involution. Empty: not known
+  // (plain VTK meshes, half models, files written before the map existed).
+  std::vector<std::int32_t> mirror;
 
   std::size_t SolidElementCount() const;
   // Indices of the solid (non-cable) elements of a layer, in element order.
   std::vector<std::int32_t> SolidElementsOfLayer(TissueLayer layer) const;
   bool Empty() const { return nodes.empty() || elements.empty(); }
+  bool HasMirrorMap() const { return !mirror.empty(); }
+  // Records nodes a and b as each other's mirror image (a == b: a node on the plane); nodes added
+  // since the map was last extended map to themselves until set. Does nothing without a map.
+  void SetMirrorPartners(std::int32_t a, std::int32_t b);
   // Throws std::invalid_argument naming the first problem (node index out of range, set entry
-  // out of range, cable/muscle mismatch, non-finite coordinate).
+  // out of range, cable/muscle mismatch, non-finite coordinate, a mirror map that is not an
+  // involution over every node).
   void Validate() const;
   // Rebuilds the per-layer element sets (epidermis, dermis, hypodermis) from element layers.
   void UpdateLayerSets();

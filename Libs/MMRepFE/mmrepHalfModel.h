@@ -32,6 +32,7 @@ struct HalfModelOptions
 // and element set restricted to what is kept (sets left empty are dropped); landmarks on the left
 // or on the plane; a track point embedded in a dropped (right) element re-embedded in a kept one.
 // Adds node set `symmetryBoundary` = the kept nodes of `planeSet`.
+// The mirror map (FEMesh::mirror) is dropped: the kept nodes' partners are gone.
 // Throws std::invalid_argument with one line when the plane set is missing or not planar (a node
 // of it farther than `tolerance` from the fitted plane), a solid element straddles the plane (the
 // model is not cut along its plane nodes), a muscle cable crosses the plane without a point on it,

@@ -4,6 +4,7 @@
 //   points                                   vtkDoubleArray, node i = point i (bit-exact doubles)
 //   cells                                    element i = cell i, VTK_LINE/TETRA/HEXAHEDRON/WEDGE
 //   cell data   "Layer"                      int: TissueLayer value (0 none, 1 epidermis, 2 dermis, 3 hypodermis)
+//   point data  "MMRep.Mirror"               int: mirror partner of each node (FEMesh::mirror), when known
 //   field data  "MMRep.Version"              int: 1
 //               "MMRep.NodeSet.<name>"       int: node indices, in set order
 //               "MMRep.ElementSet.<name>"    int: element indices, in set order
@@ -43,6 +44,7 @@ namespace
 {
 
 const std::string kPrefix = "MMRep.";
+const std::string kMirrorArray = kPrefix + "Mirror";
 
 std::string EncodeName(const std::string& name)
 {
@@ -106,7 +108,7 @@ std::vector<std::int32_t> ReadInts(vtkAbstractArray* abstract)
 {
   auto* array = vtkDataArray::SafeDownCast(abstract);
   if (!array || array->GetNumberOfComponents() != 1)
-    throw std::runtime_error("field data array '" + std::string(abstract->GetName()) +
+    throw std::runtime_error("data array '" + std::string(abstract->GetName()) +
                              "' must be a numeric array with one component");
   std::vector<std::int32_t> values(static_cast<std::size_t>(array->GetNumberOfTuples()));
   for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
@@ -114,7 +116,7 @@ std::vector<std::int32_t> ReadInts(vtkAbstractArray* abstract)
     const double v = array->GetComponent(i, 0);
     if (!(v == std::floor(v)) || v < std::numeric_limits<std::int32_t>::min() ||
         v > std::numeric_limits<std::int32_t>::max())
-      throw std::runtime_error("field data array '" + std::string(array->GetName()) + "' holds " +
+      throw std::runtime_error("data array '" + std::string(array->GetName()) + "' holds " +
                                std::to_string(v) + ", not an index");
     values[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(v);
   }
@@ -125,7 +127,7 @@ vtkDataArray* Vectors(vtkAbstractArray* abstract)
 {
   auto* array = vtkDataArray::SafeDownCast(abstract);
   if (!array || array->GetNumberOfComponents() != 3)
-    throw std::runtime_error("field data array '" + std::string(abstract->GetName()) +
+    throw std::runtime_error("data array '" + std::string(abstract->GetName()) +
                              "' must be a numeric array with three components");
   return array;
 }
@@ -133,6 +135,39 @@ vtkDataArray* Vectors(vtkAbstractArray* abstract)
 bool StartsWith(const std::string& s, const std::string& prefix)
 {
   return s.compare(0, prefix.size(), prefix) == 0;
+}
+
+// Cells as elements (the four FE cell types only), with their layers.
+void ReadElements(vtkUnstructuredGrid* grid, FEMesh& mesh)
+{
+  vtkDataArray* layers = grid->GetCellData()->GetArray("Layer");
+  if (layers && (layers->GetNumberOfComponents() != 1 || layers->GetNumberOfTuples() != grid->GetNumberOfCells()))
+    throw std::runtime_error("cell data 'Layer' must have one value per cell");
+  vtkNew<vtkIdList> ids;
+  mesh.elements.resize(static_cast<std::size_t>(grid->GetNumberOfCells()));
+  for (vtkIdType i = 0; i < grid->GetNumberOfCells(); ++i)
+  {
+    Element& e = mesh.elements[static_cast<std::size_t>(i)];
+    const int type = grid->GetCellType(i);
+    if (type != VTK_LINE && type != VTK_TETRA && type != VTK_HEXAHEDRON && type != VTK_WEDGE)
+      throw std::runtime_error("cell " + std::to_string(i) + " is a " + vtkCellTypes::GetClassNameFromTypeId(type) +
+                               "; only lines, tetrahedra, hexahedra and wedges are FE elements");
+    e.type = static_cast<ElementType>(type);
+    grid->GetCellPoints(i, ids);
+    if (ids->GetNumberOfIds() != NodeCount(e.type))
+      throw std::runtime_error("cell " + std::to_string(i) + " has " + std::to_string(ids->GetNumberOfIds()) +
+                               " points for a " + ElementTypeName(e.type));
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      e.nodes[static_cast<std::size_t>(k)] = static_cast<std::int32_t>(ids->GetId(k));
+    if (layers)
+    {
+      const double layer = layers->GetComponent(i, 0);
+      if (!(layer == 0 || layer == 1 || layer == 2 || layer == 3))
+        throw std::runtime_error("cell " + std::to_string(i) + " has layer " + std::to_string(layer) +
+                                 " (expected 0 to 3)");
+      e.layer = static_cast<TissueLayer>(static_cast<int>(layer));
+    }
+  }
 }
 
 } // namespace
@@ -165,6 +200,9 @@ vtkSmartPointer<vtkUnstructuredGrid> ToVTK(const FEMesh& mesh)
     layers->SetValue(static_cast<vtkIdType>(i), static_cast<int>(e.layer));
   }
   grid->GetCellData()->AddArray(layers);
+
+  if (mesh.HasMirrorMap())
+    grid->GetPointData()->AddArray(IntArray(kMirrorArray, mesh.mirror));
 
   vtkFieldData* field = grid->GetFieldData();
   field->AddArray(IntArray(kPrefix + "Version", {1}));
@@ -237,34 +275,14 @@ FEMesh FromVTK(vtkUnstructuredGrid* grid)
       throw std::runtime_error("point " + std::to_string(i) + " has a NaN or infinite coordinate");
   }
 
-  vtkDataArray* layers = grid->GetCellData()->GetArray("Layer");
-  if (layers && (layers->GetNumberOfComponents() != 1 || layers->GetNumberOfTuples() != grid->GetNumberOfCells()))
-    throw std::runtime_error("cell data 'Layer' must have one value per cell");
-  vtkNew<vtkIdList> ids;
-  mesh.elements.resize(static_cast<std::size_t>(grid->GetNumberOfCells()));
-  for (vtkIdType i = 0; i < grid->GetNumberOfCells(); ++i)
+  if (vtkAbstractArray* mirror = grid->GetPointData()->GetAbstractArray(kMirrorArray.c_str()))
   {
-    Element& e = mesh.elements[static_cast<std::size_t>(i)];
-    const int type = grid->GetCellType(i);
-    if (type != VTK_LINE && type != VTK_TETRA && type != VTK_HEXAHEDRON && type != VTK_WEDGE)
-      throw std::runtime_error("cell " + std::to_string(i) + " is a " + vtkCellTypes::GetClassNameFromTypeId(type) +
-                               "; only lines, tetrahedra, hexahedra and wedges are FE elements");
-    e.type = static_cast<ElementType>(type);
-    grid->GetCellPoints(i, ids);
-    if (ids->GetNumberOfIds() != NodeCount(e.type))
-      throw std::runtime_error("cell " + std::to_string(i) + " has " + std::to_string(ids->GetNumberOfIds()) +
-                               " points for a " + ElementTypeName(e.type));
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-      e.nodes[static_cast<std::size_t>(k)] = static_cast<std::int32_t>(ids->GetId(k));
-    if (layers)
-    {
-      const double layer = layers->GetComponent(i, 0);
-      if (!(layer == 0 || layer == 1 || layer == 2 || layer == 3))
-        throw std::runtime_error("cell " + std::to_string(i) + " has layer " + std::to_string(layer) +
-                                 " (expected 0 to 3)");
-      e.layer = static_cast<TissueLayer>(static_cast<int>(layer));
-    }
+    if (mirror->GetNumberOfTuples() != pointCount)
+      throw std::runtime_error("point data '" + kMirrorArray + "' must have one value per point");
+    mesh.mirror = ReadInts(mirror);
   }
+
+  ReadElements(grid, mesh);
 
   vtkFieldData* field = grid->GetFieldData();
   struct EmbeddingArrays

@@ -143,23 +143,11 @@ std::array<double, 3> CheckDistanceMapGrid(const std::array<double, 6>& box, dou
   return counts;
 }
 
-FloatImage::Pointer ComputeSurfaceDistanceMap(vtkPolyData* surface, const SurfaceDistanceMapOptions& o,
-                                              const std::function<void(double)>& progress)
+namespace
 {
-  auto report = [&](double f) {
-    if (progress)
-      progress(f);
-  };
-  if (!(o.spacing > 0) || !(o.margin >= 0) || !(o.exactBand >= 1))
-    throw std::runtime_error("distance map: spacing must be > 0, margin >= 0 and the exact band >= 1 voxel");
-  if (surface == nullptr || surface->GetNumberOfPolys() + surface->GetNumberOfStrips() == 0)
-    throw std::runtime_error("distance map: the surface has no triangles");
-  std::vector<FeatureNormals> normals;
-  const auto triangles = Triangles(surface, o.signedDistance ? &normals : nullptr);
-  if (triangles.empty())
-    throw std::runtime_error("distance map: the surface has no triangles");
-
-  // Grid over the region (or the surface's bounds) plus the margin, aligned with LPS axes.
+// The map's grid: over the region (or the surface's bounds) plus the margin, aligned with LPS axes.
+FloatImage::Pointer DistanceMapGrid(vtkPolyData* surface, const SurfaceDistanceMapOptions& o)
+{
   std::array<double, 6> box = o.region;
   if (!(box[0] <= box[1] && box[2] <= box[3] && box[4] <= box[5]))
     surface->GetBounds(box.data());
@@ -181,11 +169,17 @@ FloatImage::Pointer ComputeSurfaceDistanceMap(vtkPolyData* surface, const Surfac
   map->SetOrigin(origin);
   map->SetSpacing(spacing);
   map->Allocate();
-  const std::size_t nx = size[0], ny = size[1], nz = size[2], n = nx * ny * nz;
-  const double h = o.spacing, band = o.exactBand * h;
-  std::vector<double> exact(n, std::numeric_limits<double>::infinity());
-  std::vector<signed char> sign(o.signedDistance ? n : 0, 1); // -1 inside
+  return map;
+}
 
+// Squared distances to the surface (and signs) of the voxels within `exactBand` voxels of it.
+void ExactBand(const std::vector<Triangle>& triangles, const std::vector<FeatureNormals>& normals,
+               const FloatImage* map, double exactBand, std::vector<double>& exact, std::vector<signed char>& sign)
+{
+  const auto size = map->GetLargestPossibleRegion().GetSize();
+  const auto origin = map->GetOrigin();
+  const std::size_t nx = size[0], ny = size[1], nz = size[2];
+  const double h = map->GetSpacing()[0], band = exactBand * h;
   // Exact band: each triangle visits the voxels of its bounding box grown by the band. Work is
   // split into z-slabs owned by one thread each (no write conflicts); the minimum does not depend
   // on the order of triangles, so the result is the same for any number of threads.
@@ -246,6 +240,34 @@ FloatImage::Pointer ComputeSurfaceDistanceMap(vtkPolyData* surface, const Surfac
       }
     },
     nullptr);
+}
+} // namespace
+
+FloatImage::Pointer ComputeSurfaceDistanceMap(vtkPolyData* surface, const SurfaceDistanceMapOptions& o,
+                                              const std::function<void(double)>& progress)
+{
+  auto report = [&](double f) {
+    if (progress)
+      progress(f);
+  };
+  if (!(o.spacing > 0) || !(o.margin >= 0) || !(o.exactBand >= 1))
+    throw std::runtime_error("distance map: spacing must be > 0, margin >= 0 and the exact band >= 1 voxel");
+  if (surface == nullptr || surface->GetNumberOfPolys() + surface->GetNumberOfStrips() == 0)
+    throw std::runtime_error("distance map: the surface has no triangles");
+  std::vector<FeatureNormals> normals;
+  const auto triangles = Triangles(surface, o.signedDistance ? &normals : nullptr);
+  if (triangles.empty())
+    throw std::runtime_error("distance map: the surface has no triangles");
+
+  auto map = DistanceMapGrid(surface, o);
+  const auto size = map->GetLargestPossibleRegion().GetSize();
+  const FloatImage::RegionType region = map->GetLargestPossibleRegion();
+  const std::size_t nx = size[0], ny = size[1], nz = size[2], n = nx * ny * nz;
+  const double h = o.spacing;
+  std::vector<double> exact(n, std::numeric_limits<double>::infinity());
+  std::vector<signed char> sign(o.signedDistance ? n : 0, 1); // -1 inside
+
+  ExactBand(triangles, normals, map, o.exactBand, exact, sign);
   report(0.6);
 
   // Far field through the nearest band voxel given by the Saito–Toriwaki transform.

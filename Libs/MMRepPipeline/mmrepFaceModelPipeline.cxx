@@ -189,11 +189,11 @@ LocalRefinementOptions RefinementOptionsFor(const FaceModelOptions& options, con
   return q;
 }
 
-FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& controlPoints, const FEMesh& atlas,
-                               const FaceModelOptions& options)
+namespace
 {
-  if (ct == nullptr)
-    throw std::invalid_argument("face model: no CT image");
+// The atlas is valid and has the node sets and muscles the stages use.
+void CheckAtlas(const FEMesh& atlas, const FaceModelOptions& options)
+{
   atlas.Validate();
   for (const auto& set : {options.registration.skinSet, options.registration.skullSet, options.registration.lipsSet,
                           std::string("midsagittal")})
@@ -201,6 +201,15 @@ FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& c
       throw std::invalid_argument("atlas: node set '" + set + "' is missing");
   if (atlas.muscles.empty())
     throw std::invalid_argument("atlas: it has no muscle tracks");
+}
+} // namespace
+
+FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& controlPoints, const FEMesh& atlas,
+                               const FaceModelOptions& options)
+{
+  if (ct == nullptr)
+    throw std::invalid_argument("face model: no CT image");
+  CheckAtlas(atlas, options);
 
   FaceModelResult result;
   const auto t0 = Clock::now();

@@ -19,6 +19,7 @@
 #include <Eigen/Geometry>
 #include <vtkGenericCell.h>
 #include <vtkNew.h>
+#include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
 #include <vtkTriangleFilter.h>
 
@@ -243,6 +244,23 @@ FloatImage::Pointer SkinMap(vtkPolyData* skin, double spacing)
   }
 }
 
+// Only the polygons take part (stray vertex or line cells are not skin), as triangles.
+vtkSmartPointer<vtkPolyData> SkinTriangles(vtkPolyData* skin)
+{
+  vtkNew<vtkPolyData> polygons;
+  polygons->SetPoints(skin->GetPoints());
+  polygons->SetPolys(skin->GetPolys());
+  vtkNew<vtkTriangleFilter> triangulate;
+  triangulate->SetInputData(polygons);
+  triangulate->PassVertsOff();
+  triangulate->PassLinesOff();
+  triangulate->Update();
+  vtkSmartPointer<vtkPolyData> surface = triangulate->GetOutput();
+  if (surface->GetNumberOfPolys() == 0)
+    throw std::runtime_error("symmetry plane: the skin surface has no triangles");
+  return surface;
+}
+
 } // namespace
 
 SymmetryPlaneResult EstimateSymmetryPlane(vtkPolyData* skin, const SymmetryPlaneOptions& options)
@@ -254,18 +272,8 @@ SymmetryPlaneResult EstimateSymmetryPlane(vtkPolyData* skin, const SymmetryPlane
     throw std::invalid_argument("symmetry plane: invalid options (iterations >= 1, samples >= 3, "
                                 "trim fraction in [0, 0.9), tolerance > 0, map spacing > 0)");
 
-  // Only the polygons take part (stray vertex or line cells are not skin), as triangles.
-  vtkNew<vtkPolyData> polygons;
-  polygons->SetPoints(skin->GetPoints());
-  polygons->SetPolys(skin->GetPolys());
-  vtkNew<vtkTriangleFilter> triangulate;
-  triangulate->SetInputData(polygons);
-  triangulate->PassVertsOff();
-  triangulate->PassLinesOff();
-  triangulate->Update();
-  vtkPolyData* surface = triangulate->GetOutput();
-  if (surface->GetNumberOfPolys() == 0)
-    throw std::runtime_error("symmetry plane: the skin surface has no triangles");
+  const vtkSmartPointer<vtkPolyData> triangles = SkinTriangles(skin);
+  vtkPolyData* surface = triangles;
 
   const std::vector<Eigen::Vector3d> samples = GridSamples(surface, options.samplePoints);
   if (samples.size() < 3)

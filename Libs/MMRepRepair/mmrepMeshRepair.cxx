@@ -11,29 +11,18 @@
 // the threshold; each phase first moves inner nodes only, then also surface nodes.
 #include "mmrepMeshRepair.h"
 
+#include "mmrepEmbedding.h"
+#include "mmrepIdealPositions.h"
 #include "mmrepLipContact.h"
-
 #include "mmrepMeshQuality.h"
-#include "mmrepSurfaceProjector.h"
-
-#include <vtkHexahedron.h>
-#include <vtkNew.h>
-#include <vtkPoints.h>
-#include <vtkIdList.h>
-#include <vtkStaticPointLocator.h>
-#include <vtkTetra.h>
-#include <vtkWedge.h>
-
-#include <Eigen/Eigenvalues>
-#include <Eigen/Geometry>
+#include "mmrepNodeElements.h"
+#include "mmrepRepairConstraints.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <memory>
 #include <numeric>
-#include <optional>
 #include <stdexcept>
 
 namespace mmrep
@@ -45,37 +34,19 @@ constexpr double kMargin = 0.05;     // elements are improved up to threshold + 
 constexpr double kRingMargin = 0.4; // elements around a stuck one are improved up to threshold + this
 constexpr double kEqual = 1e-12;     // qualities closer than this compare equal
 
-enum class SurfaceKind : std::uint8_t
-{
-  None,
-  Skin,
-  Skull
-};
-
 bool IsSolid(ElementType t)
 {
   return t != ElementType::Cable;
 }
 
-// Hex corner (r,s,t) bits of VTK's node order, for the trilinear "ideal corner" position.
-constexpr int kHexBits[8] = {0b000, 0b001, 0b011, 0b010, 0b100, 0b101, 0b111, 0b110}; // bit0=r, bit1=s, bit2=t
-int HexNodeOfBits(int bits)
-{
-  for (int i = 0; i < 8; ++i)
-    if (kHexBits[i] == bits)
-      return i;
-  return -1;
-}
-
 class Repairer
 {
 public:
-  Repairer(FEMesh& mesh, const RepairOptions& options) : mesh_(mesh), options_(options)
+  Repairer(FEMesh& mesh, const RepairOptions& options)
+    : mesh_(mesh), options_(options), adjacency_(mesh), constraints_(mesh, adjacency_, options)
   {
     threshold_ = options.scaledJacobianThreshold;
     cap_ = std::min(1.0, threshold_ + kMargin);
-    BuildAdjacency();
-    BuildConstraints();
     changedAt_.assign(mesh_.elements.size(), 0);
     failedAt_.assign(mesh_.nodes.size(), 0);
     ringFailedAt_.assign(mesh_.nodes.size(), 0);
@@ -127,218 +98,20 @@ public:
         options_.progress(std::min(1.0, double(pass * stages + stage + 1) / stages));
     }
     }
-    MoveMuscleNodes(original);
+    FollowEmbeddings(mesh_, original);
 
     for (std::size_t i = 0; i < mesh_.nodes.size(); ++i)
       if (mesh_.nodes[i] != original[i])
       {
         ++report.movedNodes;
-        if (surface_[i] != SurfaceKind::None)
+        if (constraints_.Surface(i) != SurfaceKind::None)
           ++report.movedSurfaceNodes;
       }
-    report.symmetricPairs = pairs_;
+    report.symmetricPairs = constraints_.MirrorPairs();
   }
+
 
 private:
-  // ---- setup --------------------------------------------------------------------------------
-  void BuildAdjacency()
-  {
-    const std::size_t n = mesh_.nodes.size();
-    offsets_.assign(n + 1, 0);
-    for (const Element& e : mesh_.elements)
-      if (IsSolid(e.type))
-        for (int k = 0; k < NodeCount(e.type); ++k)
-          ++offsets_[e.nodes[k] + 1];
-    std::partial_sum(offsets_.begin(), offsets_.end(), offsets_.begin());
-    adjacent_.assign(offsets_.back(), 0);
-    std::vector<std::size_t> fill(offsets_.begin(), offsets_.end() - 1);
-    for (std::size_t e = 0; e < mesh_.elements.size(); ++e) // ascending element ids per node
-      if (IsSolid(mesh_.elements[e].type))
-        for (int k = 0; k < NodeCount(mesh_.elements[e].type); ++k)
-        {
-          const auto node = static_cast<std::size_t>(mesh_.elements[e].nodes[k]);
-          if (fill[node] == offsets_[node] || adjacent_[fill[node] - 1] != e) // a node listed twice in one element
-            adjacent_[fill[node]++] = e;
-        }
-    // Nodes listed twice in an element leave unused slots: compact.
-    std::vector<std::size_t> compact;
-    std::vector<std::size_t> newOffsets(n + 1, 0);
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      for (std::size_t k = offsets_[i]; k < fill[i]; ++k)
-        compact.push_back(adjacent_[k]);
-      newOffsets[i + 1] = compact.size();
-    }
-    adjacent_ = std::move(compact);
-    offsets_ = std::move(newOffsets);
-  }
-
-  const std::vector<std::int32_t>* Set(const char* name) const
-  {
-    const auto it = mesh_.nodeSets.find(name);
-    return it == mesh_.nodeSets.end() ? nullptr : &it->second;
-  }
-
-  void BuildConstraints()
-  {
-    const std::size_t n = mesh_.nodes.size();
-    surface_.assign(n, SurfaceKind::None);
-    onPlane_.assign(n, 0);
-    partner_.resize(n);
-    std::iota(partner_.begin(), partner_.end(), 0);
-
-    // Skull first, then skin: a node in both sets follows the skin.
-    for (const auto& [name, kind] : {std::pair{"skull", SurfaceKind::Skull}, std::pair{"skin", SurfaceKind::Skin}})
-      if (const auto* set = Set(name))
-        for (const std::int32_t id : *set)
-          surface_[id] = kind;
-    auto projector = [&](vtkPolyData* given, SurfaceKind kind) -> std::unique_ptr<SurfaceProjector> {
-      if (std::none_of(surface_.begin(), surface_.end(), [&](SurfaceKind k) { return k == kind; }))
-        return nullptr;
-      if (given != nullptr)
-        return std::make_unique<SurfaceProjector>(given);
-      // No surface given: the input mesh's own boundary faces made of the set's nodes (or all of them).
-      std::vector<char> mask(n, 0);
-      for (std::size_t i = 0; i < n; ++i)
-        mask[i] = surface_[i] == kind;
-      vtkSmartPointer<vtkPolyData> boundary = BoundarySurface(mesh_, &mask);
-      if (boundary->GetNumberOfCells() == 0)
-        boundary = BoundarySurface(mesh_);
-      ownSurfaces_.push_back(boundary);
-      return boundary->GetNumberOfCells() > 0 ? std::make_unique<SurfaceProjector>(boundary) : nullptr;
-    };
-    skin_ = projector(options_.skinSurface, SurfaceKind::Skin);
-    skull_ = projector(options_.skullSurface, SurfaceKind::Skull);
-    for (std::size_t i = 0; i < n; ++i) // a surface set without any surface face: keep its nodes fixed
-      if ((surface_[i] == SurfaceKind::Skin && !skin_) || (surface_[i] == SurfaceKind::Skull && !skull_))
-        fixed_.push_back(i);
-
-    const auto* midsagittal = Set("midsagittal");
-    if (options_.hasSymmetryPlane)
-    {
-      plane_ = options_.symmetryPlane;
-      if (!(plane_.normal.norm() > 0) || !plane_.normal.allFinite() || !plane_.point.allFinite())
-        throw std::invalid_argument("symmetry plane has no valid normal");
-      plane_.normal.normalize();
-      hasPlane_ = true;
-      FindMirrorPairs();
-    }
-    else if (midsagittal != nullptr && midsagittal->size() >= 3)
-      FitPlane(*midsagittal);
-    if (hasPlane_ && midsagittal != nullptr)
-      for (const std::int32_t id : *midsagittal)
-        onPlane_[id] = 1;
-    std::sort(fixed_.begin(), fixed_.end());
-  }
-
-  double Diagonal() const
-  {
-    Eigen::AlignedBox3d box;
-    for (const Point3& p : mesh_.nodes)
-      box.extend(p);
-    return box.diagonal().norm();
-  }
-
-  // Symmetric input: every node of a solid element has a mirror node of a solid element (same
-  // surface kind) within 1e-7 of the mesh size. Nodes of no solid element (embedded muscle points,
-  // which may coincide pairwise) never move in the search and are left out. Coincident nodes (a
-  // tangle can project two skin nodes onto one surface point) make the position ambiguous: the
-  // candidate whose neighbourhood (centroid of its elements' nodes) is the mirror of the node's wins.
-  void FindMirrorPairs()
-  {
-    const std::size_t n = mesh_.nodes.size();
-    const double tolerance = 1e-7 * std::max(Diagonal(), 1e-300);
-    auto solid = [&](std::size_t i) { return offsets_[i] != offsets_[i + 1]; };
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    std::vector<std::size_t> ids;
-    for (std::size_t i = 0; i < n; ++i)
-      if (solid(i))
-      {
-        points->InsertNextPoint(mesh_.nodes[i].data());
-        ids.push_back(i);
-      }
-    vtkNew<vtkPolyData> cloud;
-    cloud->SetPoints(points);
-    vtkNew<vtkStaticPointLocator> locator;
-    locator->SetDataSet(cloud);
-    locator->BuildLocator();
-    std::vector<std::int32_t> partner(n);
-    std::iota(partner.begin(), partner.end(), 0);
-    auto neighbourhood = [&](std::size_t i) {
-      Point3 sum = Point3::Zero();
-      int count = 0;
-      for (std::size_t a = offsets_[i]; a < offsets_[i + 1]; ++a)
-      {
-        const Element& e = mesh_.elements[adjacent_[a]];
-        for (int k = 0; k < NodeCount(e.type); ++k, ++count)
-          sum += mesh_.nodes[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])];
-      }
-      return Point3(sum / std::max(count, 1));
-    };
-    vtkNew<vtkIdList> candidates;
-    for (const std::size_t i : ids)
-    {
-      const Point3 mirror = plane_.Mirror(mesh_.nodes[i]);
-      locator->FindPointsWithinRadius(tolerance, mirror.data(), candidates);
-      std::size_t best = n;
-      double bestMismatch = std::numeric_limits<double>::infinity();
-      for (vtkIdType c = 0; c < candidates->GetNumberOfIds(); ++c)
-      {
-        const std::size_t j = ids[static_cast<std::size_t>(candidates->GetId(c))];
-        if (surface_[j] != surface_[i])
-          continue;
-        const double mismatch =
-          candidates->GetNumberOfIds() == 1 ? 0.0 : (plane_.Mirror(neighbourhood(i)) - neighbourhood(j)).norm();
-        if (mismatch < bestMismatch || (mismatch == bestMismatch && j < best))
-        {
-          best = j;
-          bestMismatch = mismatch;
-        }
-      }
-      if (best == n)
-        return; // not symmetric: nodes move one by one
-      partner[i] = static_cast<std::int32_t>(best);
-    }
-    for (std::size_t i = 0; i < n; ++i)
-      if (partner[partner[i]] != static_cast<std::int32_t>(i))
-        return;
-    partner_ = std::move(partner);
-    pairs_ = true;
-    for (const std::size_t i : ids)
-      if (partner_[i] == static_cast<std::int32_t>(i))
-        onPlane_[i] = 1; // its own mirror: must stay on the plane to stay symmetric
-  }
-
-  // Mid-sagittal nodes that are coplanar (to 1e-6 of the mesh size) stay on their plane.
-  void FitPlane(const std::vector<std::int32_t>& ids)
-  {
-    Point3 centre = Point3::Zero();
-    for (const auto id : ids)
-      centre += mesh_.nodes[id];
-    centre /= static_cast<double>(ids.size());
-    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-    for (const auto id : ids)
-    {
-      const Point3 d = mesh_.nodes[id] - centre;
-      covariance += d * d.transpose();
-    }
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
-    if (solver.info() != Eigen::Success || !(solver.eigenvalues()(1) > 0))
-      return; // collinear or coincident: no plane
-    Plane plane;
-    plane.point = centre;
-    plane.normal = solver.eigenvectors().col(0).normalized();
-    double worst = 0;
-    for (const auto id : ids)
-      worst = std::max(worst, std::abs(plane.SignedDistance(mesh_.nodes[id])));
-    if (worst <= 1e-6 * Diagonal())
-    {
-      plane_ = plane;
-      hasPlane_ = true;
-    }
-  }
-
   // ---- quality ------------------------------------------------------------------------------
   double Quality(std::size_t e) const
   {
@@ -365,11 +138,6 @@ private:
     return regularity ? quality_[e] <= 0 : quality_[e] < threshold_;
   }
 
-  bool IsFixed(std::size_t node) const
-  {
-    return std::binary_search(fixed_.begin(), fixed_.end(), node);
-  }
-
   // ---- one sweep over the bad elements, worst first ------------------------------------------
   bool Sweep(bool regularity, bool surfaceAllowed)
   {
@@ -394,10 +162,10 @@ private:
       if (static_cast<int>(corners.size()) == count)
         std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return corners[a] < corners[b]; });
       auto optimize = [&](std::size_t node, double cap) {
-        const bool constrained = surface_[node] != SurfaceKind::None || onPlane_[node];
-        if ((constrained && !surfaceAllowed) || IsFixed(node))
+        const bool constrained = constraints_.Constrained(node);
+        if ((constrained && !surfaceAllowed) || constraints_.IsFixed(node))
           return;
-        if (OptimizeNode(std::min<std::size_t>(node, partner_[node]), cap))
+        if (OptimizeNode(std::min<std::size_t>(node, constraints_.Partner(node)), cap))
           changed = true;
       };
       for (const int local : order)
@@ -413,9 +181,9 @@ private:
       for (int local = 0; local < count; ++local)
       {
         const auto node = static_cast<std::size_t>(element.nodes[local]);
-        for (std::size_t k = offsets_[node]; k < offsets_[node + 1]; ++k)
+        for (std::size_t k = adjacency_.offsets[node]; k < adjacency_.offsets[node + 1]; ++k)
         {
-          const Element& neighbour = mesh_.elements[adjacent_[k]];
+          const Element& neighbour = mesh_.elements[adjacency_.adjacent[k]];
           for (int i = 0; i < NodeCount(neighbour.type); ++i)
             around.push_back(static_cast<std::size_t>(neighbour.nodes[i]));
         }
@@ -439,53 +207,29 @@ private:
   // Elements around a node and its mirror partner, ascending.
   std::vector<std::size_t> Patch(std::size_t node) const
   {
-    std::vector<std::size_t> patch(adjacent_.begin() + offsets_[node], adjacent_.begin() + offsets_[node + 1]);
-    const auto mirror = static_cast<std::size_t>(partner_[node]);
+    std::vector<std::size_t> patch(adjacency_.adjacent.begin() + adjacency_.offsets[node], adjacency_.adjacent.begin() + adjacency_.offsets[node + 1]);
+    const auto mirror = static_cast<std::size_t>(constraints_.Partner(node));
     if (mirror != node)
     {
-      patch.insert(patch.end(), adjacent_.begin() + offsets_[mirror], adjacent_.begin() + offsets_[mirror + 1]);
+      patch.insert(patch.end(), adjacency_.adjacent.begin() + adjacency_.offsets[mirror], adjacency_.adjacent.begin() + adjacency_.offsets[mirror + 1]);
       std::sort(patch.begin(), patch.end());
       patch.erase(std::unique(patch.begin(), patch.end()), patch.end());
     }
     return patch;
   }
 
-  // A proposed position made admissible: on the node's surface, then on the plane.
-  Point3 Constrain(std::size_t node, Point3 p) const
-  {
-    const SurfaceProjector* surface = surface_[node] == SurfaceKind::Skin    ? skin_.get()
-                                      : surface_[node] == SurfaceKind::Skull ? skull_.get()
-                                                                             : nullptr;
-    if (surface != nullptr)
-      p = surface->Project(p);
-    if (!onPlane_[node])
-      return p;
-    p = plane_.Project(p);
-    // On a surface and the plane: alternate projections onto their intersection curve (they
-    // cross nearly at right angles, so this converges in a few steps), ending on the plane.
-    for (int i = 0; i < 20 && surface != nullptr; ++i)
-    {
-      const Point3 q = plane_.Project(surface->Project(p));
-      const double step = (q - p).norm();
-      p = q;
-      if (step <= 1e-13 * (1 + p.norm()))
-        break;
-    }
-    return p;
-  }
-
   void Place(std::size_t node, const Point3& p)
   {
     mesh_.nodes[node] = p;
-    const auto mirror = static_cast<std::size_t>(partner_[node]);
+    const auto mirror = static_cast<std::size_t>(constraints_.Partner(node));
     if (mirror != node)
-      mesh_.nodes[mirror] = plane_.Mirror(p);
+      mesh_.nodes[mirror] = constraints_.SymmetryPlane().Mirror(p);
   }
 
   // Qualities of the patch with the node (and its partner) at p; the mesh is restored.
   void Evaluate(std::size_t node, const Point3& p, const std::vector<std::size_t>& patch, std::vector<double>& out)
   {
-    const auto mirror = static_cast<std::size_t>(partner_[node]);
+    const auto mirror = static_cast<std::size_t>(constraints_.Partner(node));
     const Point3 keep = mesh_.nodes[node], keepMirror = mesh_.nodes[mirror];
     Place(node, p);
     out.resize(patch.size());
@@ -519,123 +263,6 @@ private:
     return false;
   }
 
-  // Where the node would make each of its elements an affine (parallelepiped / straight prism)
-  // cell, averaged over its elements; the mean of the element centroids as a smoothing target.
-  // Per-element ideal positions are appended to `each` (tried one by one when the means fail:
-  // a neighbour that is itself misplaced spoils the mean but not every element's ideal).
-  std::pair<Point3, Point3> Targets(std::size_t node, std::vector<Point3>& each) const
-  {
-    each.clear();
-    Point3 ideal = Point3::Zero(), centroids = Point3::Zero();
-    int idealCount = 0, count = 0;
-    const auto P = [&](const Element& e, int k) -> const Point3& { return mesh_.nodes[e.nodes[k]]; };
-    for (std::size_t k = offsets_[node]; k < offsets_[node + 1]; ++k)
-    {
-      const Element& e = mesh_.elements[adjacent_[k]];
-      const int n = NodeCount(e.type);
-      Point3 centroid = Point3::Zero();
-      int local = -1;
-      for (int i = 0; i < n; ++i)
-      {
-        centroid += P(e, i);
-        if (static_cast<std::size_t>(e.nodes[i]) == node)
-          local = i;
-      }
-      centroids += centroid / n;
-      ++count;
-      if (e.type == ElementType::Hexahedron)
-      {
-        // Trilinear map without twist: x_c = sum over the 7 other corners of (-1)^(flips+1) x.
-        Point3 x = Point3::Zero();
-        for (int flip = 1; flip < 8; ++flip)
-        {
-          const int flips = __builtin_popcount(flip);
-          x += (flips % 2 == 1 ? 1.0 : -1.0) * P(e, HexNodeOfBits(kHexBits[local] ^ flip));
-        }
-        ideal += x;
-        each.push_back(x);
-        ++idealCount;
-      }
-      else if (e.type == ElementType::Wedge)
-      {
-        // Straight prism: same offset to the other triangle as the mean of the two other edges.
-        const int other = local < 3 ? local + 3 : local - 3;
-        const int base = local < 3 ? 0 : 3, otherBase = 3 - base;
-        Point3 offset = Point3::Zero();
-        for (int i = 0; i < 3; ++i)
-          if (base + i != local)
-            offset += P(e, base + i) - P(e, otherBase + i);
-        ideal += P(e, other) + offset / 2;
-        each.push_back(P(e, other) + offset / 2);
-        ++idealCount;
-      }
-      else if (e.type == ElementType::Tetrahedron)
-      {
-        // Regular-tet apex over the opposite face, on the side that gives a positive volume.
-        int face[3], f = 0;
-        for (int i = 0; i < 4; ++i)
-          if (i != local)
-            face[f++] = i;
-        const Point3 a = P(e, face[0]), b = P(e, face[1]), c = P(e, face[2]);
-        Point3 normal = (b - a).cross(c - a);
-        const double area2 = normal.norm();
-        if (area2 > 0)
-        {
-          const double edge = ((b - a).norm() + (c - b).norm() + (a - c).norm()) / 3;
-          normal /= area2;
-          // In a valid VTK tet the faces (0,2,3) and (0,1,2) opposite nodes 1 and 3 face their node,
-          // while (1,2,3) and (0,1,3) opposite nodes 0 and 2 face away.
-          const double sign = (local == 1 || local == 3) ? 1.0 : -1.0;
-          each.push_back((a + b + c) / 3 + sign * std::sqrt(2.0 / 3.0) * edge * normal);
-          ideal += each.back();
-          ++idealCount;
-        }
-      }
-    }
-    const Point3 p = mesh_.nodes[node];
-    return {idealCount > 0 ? Point3(ideal / idealCount) : p, count > 0 ? Point3(centroids / count) : p};
-  }
-
-  // Unit directions spanning the node's admissible moves: 3D (axes and cube diagonals), a surface's
-  // tangent plane or the symmetry plane (axes and diagonals of a basis), or their intersection line.
-  std::vector<Point3> Directions(std::size_t node, const Point3& p) const
-  {
-    std::vector<Point3> normals;
-    if (surface_[node] == SurfaceKind::Skin)
-      normals.push_back(skin_->Normal(p));
-    else if (surface_[node] == SurfaceKind::Skull)
-      normals.push_back(skull_->Normal(p));
-    if (onPlane_[node])
-      normals.push_back(plane_.normal);
-    normals.erase(std::remove_if(normals.begin(), normals.end(), [](const Point3& n) { return !(n.norm() > 0.5); }),
-                  normals.end());
-    std::vector<Point3> d;
-    if (normals.empty())
-    {
-      for (int axis = 0; axis < 3; ++axis)
-        for (const double s : {1.0, -1.0})
-          d.push_back(s * Point3::Unit(axis));
-      for (int corner = 0; corner < 8; ++corner)
-        d.push_back(Point3(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1, corner & 4 ? 1 : -1) / std::sqrt(3.0));
-      return d;
-    }
-    if (normals.size() == 2)
-    {
-      const Point3 line = normals[0].cross(normals[1]);
-      if (line.norm() > 1e-6)
-        return {line.normalized(), -line.normalized()};
-    }
-    const Point3& n = normals[0];
-    const Point3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
-    for (const Point3& t : {t1, t2, Point3((t1 + t2) / std::sqrt(2.0)), Point3((t1 - t2) / std::sqrt(2.0))})
-    {
-      d.push_back(t);
-      d.push_back(-t);
-    }
-    return d;
-  }
-
-  // Local search on one node (and its mirror partner). Returns true when it moved.
   bool OptimizeNode(std::size_t node, double cap)
   {
     const std::vector<std::size_t> patch = Patch(node);
@@ -660,9 +287,9 @@ private:
     const Point3 start = mesh_.nodes[node];
     double reach = 0;
     int others = 0;
-    for (std::size_t k = offsets_[node]; k < offsets_[node + 1]; ++k)
+    for (std::size_t k = adjacency_.offsets[node]; k < adjacency_.offsets[node + 1]; ++k)
     {
-      const Element& e = mesh_.elements[adjacent_[k]];
+      const Element& e = mesh_.elements[adjacency_.adjacent[k]];
       for (int i = 0; i < NodeCount(e.type); ++i)
         if (static_cast<std::size_t>(e.nodes[i]) != node)
         {
@@ -678,7 +305,7 @@ private:
     Point3 p = start;
     // Tries a position: keeps it when it improves the patch.
     auto attempt = [&](const Point3& raw) {
-      const Point3 q = Constrain(node, raw);
+      const Point3 q = constraints_.Constrain(node, raw);
       if (!q.allFinite() || q == p)
         return false;
       Evaluate(node, q, patch, trial);
@@ -699,7 +326,7 @@ private:
       // 1. Geometric targets, full and half way (unchanged while the node has not moved).
       if (retryTargets)
       {
-        const auto [ideal, centroid] = Targets(node, each);
+        const auto [ideal, centroid] = IdealPositions(mesh_, adjacency_, node, each);
         if (attempt(ideal) || attempt(centroid) || attempt(0.5 * (p + ideal)) || attempt(0.5 * (p + centroid)))
           continue;
         if (std::any_of(each.begin(), each.end(), [&](const Point3& x) { return attempt(x); }))
@@ -721,8 +348,8 @@ private:
           Evaluate(node, q, one, value);
           gradient[axis] = (value[0] - current[worst]) / delta;
         }
-        if (onPlane_[node])
-          gradient -= plane_.normal.dot(gradient) * plane_.normal;
+        if (constraints_.OnPlane(node))
+          gradient -= constraints_.SymmetryPlane().normal.dot(gradient) * constraints_.SymmetryPlane().normal;
         const double norm = gradient.norm();
         if (norm > 0 && std::isfinite(norm))
           stepped = attempt(p + (2 * h / norm) * gradient) || attempt(p + (h / norm) * gradient);
@@ -730,7 +357,7 @@ private:
       // 3. Compass steps in the directions the node may move (its surface / plane tangents).
       if (!stepped)
       {
-        const std::vector<Point3> directions = Directions(node, p);
+        const std::vector<Point3> directions = constraints_.Directions(node, p);
         for (std::size_t d = 0; d < directions.size() && !stepped; ++d)
           stepped = attempt(p + h * directions[d]);
       }
@@ -753,55 +380,17 @@ private:
     return moved;
   }
 
-  // Muscle nodes that belong to no solid element follow their embedding element.
-  void MoveMuscleNodes(const std::vector<Point3>& original)
-  {
-    for (auto& [name, muscle] : mesh_.muscles)
-      for (std::size_t k = 0; k < muscle.nodes.size() && k < muscle.embedding.size(); ++k)
-      {
-        const auto node = static_cast<std::size_t>(muscle.nodes[k]);
-        const Embedding& embedding = muscle.embedding[k];
-        if (offsets_[node] != offsets_[node + 1] || embedding.element < 0 ||
-            static_cast<std::size_t>(embedding.element) >= mesh_.elements.size())
-          continue;
-        const Element& e = mesh_.elements[embedding.element];
-        const int n = NodeCount(e.type);
-        bool changed = false;
-        for (int i = 0; i < n; ++i)
-          changed = changed || mesh_.nodes[e.nodes[i]] != original[e.nodes[i]];
-        if (!changed)
-          continue;
-        double weights[8] = {};
-        switch (e.type)
-        {
-          case ElementType::Hexahedron: vtkHexahedron::InterpolationFunctions(embedding.pcoords.data(), weights); break;
-          case ElementType::Wedge: vtkWedge::InterpolationFunctions(embedding.pcoords.data(), weights); break;
-          case ElementType::Tetrahedron: vtkTetra::InterpolationFunctions(embedding.pcoords.data(), weights); break;
-          default: continue;
-        }
-        Point3 x = Point3::Zero();
-        for (int i = 0; i < n; ++i)
-          x += weights[i] * mesh_.nodes[e.nodes[i]];
-        mesh_.nodes[node] = x;
-      }
-  }
 
   FEMesh& mesh_;
   const RepairOptions& options_;
+  const NodeElements adjacency_;
+  const RepairConstraints constraints_;
   double threshold_ = 0.3, cap_ = 0.35;
-  std::vector<std::size_t> offsets_, adjacent_; // node -> solid elements (CSR)
   std::vector<double> quality_;
-  std::vector<SurfaceKind> surface_;
-  std::vector<char> onPlane_;
-  std::vector<std::int32_t> partner_;
-  std::vector<std::size_t> fixed_;
-  bool pairs_ = false, hasPlane_ = false, ring_ = false;
+  bool ring_ = false;
   // Logical clock of searches: when each element last changed, when each node's search last failed.
   std::uint64_t clock_ = 1;
   std::vector<std::uint64_t> changedAt_, failedAt_, ringFailedAt_;
-  Plane plane_;
-  std::vector<vtkSmartPointer<vtkPolyData>> ownSurfaces_;
-  std::unique_ptr<SurfaceProjector> skin_, skull_;
 };
 
 double Value(double v)

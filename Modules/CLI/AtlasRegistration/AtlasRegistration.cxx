@@ -5,12 +5,11 @@
 #include "mmrepImageIO.h"
 #include "mmrepFEMeshIO.h"
 #include "mmrepLandmarkIO.h"
+#include "mmrepRegistrationGrids.h"
 #include "mmrepResourceBudget.h"
-#include "mmrepSurfaceDistanceMap.h"
 #include "mmrepSurfaceIO.h"
 #include "mmrepSymmetryPlane.h"
 
-#include <array>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -74,30 +73,17 @@ void Run(mmrep::cli::ModuleContext& ctx)
   const auto atlas = mmrep::ReadFEMesh(args.String("atlasMesh"));
   // The transform's grid covers the atlas (where the field is defined) with a 10 mm margin; one
   // too large for memory is refused before the registration.
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
-  for (const auto& n : atlas.nodes)
-  {
-    lo = lo.cwiseMin(n);
-    hi = hi.cwiseMax(n);
-  }
-  const double spacing = args.Double("transformSpacing");
-  std::vector<double> gridCounts;
-  for (unsigned a = 0; a < 3; ++a)
-    gridCounts.push_back(std::ceil((hi[a] - lo[a] + 20.0) / spacing) + 1);
+  const auto grid = mmrep::TransformGridAround(atlas.nodes, 10.0, args.Double("transformSpacing"));
   if (fieldOut)
     mmrep::CheckMemoryNeed("--transformSpacing " + args.String("transformSpacing") + ": the transform would be",
-                           gridCounts, 3 * sizeof(float));
+                           grid.counts, 3 * sizeof(float));
   mmrep::SubjectData subject;
   subject.skin = mmrep::ReadSurface(args.String("subjectSkin"));
   subject.skull = mmrep::ReadSurface(args.String("subjectSkull"));
   subject.controlPoints = mmrep::ReadLandmarks(args.String("subjectControlPoints"));
-  for (vtkPolyData* surface : {subject.skin.Get(), subject.skull.Get()}) // the maps of R, sized before the work
-  {
-    std::array<double, 6> bounds;
-    surface->GetBounds(bounds.data());
-    mmrep::CheckDistanceMapGrid(bounds, mmrep::AtlasRegistrationOptions{}.mapMargin, args.Double("mapSpacing"),
-                                "--mapSpacing");
-  }
+  // The maps of R, sized before the work.
+  mmrep::CheckSubjectMapGrids(subject, mmrep::AtlasRegistrationOptions{}.mapMargin, args.Double("mapSpacing"),
+                              "--mapSpacing");
 
   const mmrep::Plane atlasPlane = args.Given("atlasPlane") ? PlaneArgument(args, "atlasPlane")
                                                            : mmrep::FitPlaneToNodeSet(atlas, "midsagittal");
@@ -126,20 +112,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
   mmrep::WriteFEMesh(result.mesh, outputs[0]->TempPath(),
                      mmrep::cli::FileExtension(outputs[0]->FinalPath()).substr(1));
   if (fieldOut)
-  {
-    auto grid = itk::Image<float, 3>::New();
-    itk::Image<float, 3>::RegionType region;
-    itk::Image<float, 3>::PointType origin;
-    for (unsigned a = 0; a < 3; ++a)
-    {
-      origin[a] = lo[a] - 10.0;
-      region.SetSize(a, static_cast<itk::SizeValueType>(gridCounts[a]));
-    }
-    grid->SetRegions(region);
-    grid->SetOrigin(origin);
-    grid->SetSpacing(spacing);
-    mmrep::WriteDisplacementField(result.transform.ToDisplacementField(grid), fieldOut->TempPath());
-  }
+    mmrep::WriteDisplacementField(result.transform.ToDisplacementField(grid.Image()), fieldOut->TempPath());
   if (reportOut)
   {
     reportOut->WriteText(mmrep::cli::FileExtension(reportOut->FinalPath()) == ".md"

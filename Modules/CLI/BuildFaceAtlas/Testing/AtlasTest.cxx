@@ -124,6 +124,7 @@ TEST(AtlasModule, RebuildMatchesShipped)
     ASSERT_EQ(rebuilt.elements[e].layer, shipped.elements[e].layer) << "element " << e;
   }
   EXPECT_EQ(rebuilt.nodeSets, shipped.nodeSets);
+  EXPECT_EQ(rebuilt.mirror, shipped.mirror);
   EXPECT_EQ(rebuilt.elementSets, shipped.elementSets);
   ASSERT_EQ(rebuilt.muscles.size(), shipped.muscles.size());
   for (const auto& [name, m] : shipped.muscles)

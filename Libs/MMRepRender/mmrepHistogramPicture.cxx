@@ -1,4 +1,4 @@
-#include "MeshReparationHistogram.h"
+#include "mmrepHistogramPicture.h"
 
 #include "mmrepSnapshot.h"
 

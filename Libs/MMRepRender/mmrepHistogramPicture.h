@@ -1,4 +1,4 @@
-// PNG of the scaled-Jacobian histograms before and after the repair (VTK, off-screen; needs X).
+// PNG of scaled-Jacobian histograms, e.g. before and after a repair (VTK, off-screen; needs X).
 #pragma once
 
 #include <string>
