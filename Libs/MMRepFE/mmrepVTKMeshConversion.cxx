@@ -215,11 +215,11 @@ vtkSmartPointer<vtkUnstructuredGrid> ToVTK(const FEMesh& mesh)
   return grid;
 }
 
-FEMesh FromVTK(vtkUnstructuredGrid* grid)
+namespace
 {
-  if (!grid)
-    throw std::runtime_error("no unstructured grid");
-  FEMesh mesh;
+// Points -> nodes (finite coordinates only).
+void ReadNodes(vtkUnstructuredGrid* grid, FEMesh& mesh)
+{
   const vtkIdType pointCount = grid->GetNumberOfPoints();
   if (pointCount > std::numeric_limits<std::int32_t>::max())
     throw std::runtime_error("too many points (" + std::to_string(pointCount) + ")");
@@ -230,7 +230,11 @@ FEMesh FromVTK(vtkUnstructuredGrid* grid)
     if (!mesh.nodes[static_cast<std::size_t>(i)].allFinite())
       throw std::runtime_error("point " + std::to_string(i) + " has a NaN or infinite coordinate");
   }
+}
 
+// Cells -> elements (the four FE cell types) with their layers.
+void ReadElements(vtkUnstructuredGrid* grid, FEMesh& mesh)
+{
   vtkDataArray* layers = grid->GetCellData()->GetArray("Layer");
   if (layers && (layers->GetNumberOfComponents() != 1 || layers->GetNumberOfTuples() != grid->GetNumberOfCells()))
     throw std::runtime_error("cell data 'Layer' must have one value per cell");
@@ -259,6 +263,16 @@ FEMesh FromVTK(vtkUnstructuredGrid* grid)
       e.layer = static_cast<TissueLayer>(static_cast<int>(layer));
     }
   }
+}
+} // namespace
+
+FEMesh FromVTK(vtkUnstructuredGrid* grid)
+{
+  if (!grid)
+    throw std::runtime_error("no unstructured grid");
+  FEMesh mesh;
+  ReadNodes(grid, mesh);
+  ReadElements(grid, mesh);
 
   vtkFieldData* field = grid->GetFieldData();
   struct EmbeddingArrays
