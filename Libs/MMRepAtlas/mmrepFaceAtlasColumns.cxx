@@ -2,6 +2,8 @@
 // the bone depth along it (outliers rejected) and the harmonic fill of the thickness elsewhere.
 #include "mmrepFaceAtlasStages.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>

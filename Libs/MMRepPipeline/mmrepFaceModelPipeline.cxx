@@ -11,6 +11,7 @@
 #include "mmrepSymmetryPlane.h"
 
 #include <vtkBox.h>
+#include <vtkNew.h>
 #include <vtkExtractPolyDataGeometry.h>
 
 #include <algorithm>

@@ -75,20 +75,20 @@ TEST(CoreSurfaceDistance, NodesAboveASquareAtKnownHeights)
   FEMesh mesh;
   mesh.nodes = {{0, 0, 1}, {3, -2, 2}, {-1, 5, -3}, {13, 0, 4}}; // the last: 5 mm from the edge x = 10
   mesh.nodeSets["skin"] = {0, 1, 2, 3};
-  const auto d = NodeSurfaceDistances(mesh.nodes, {3, 0}, square);
+  const auto d = NodeSurfaceDistances(mesh.nodes, {3, 0}, square.GetPointer());
   ASSERT_EQ(d.size(), 2u);
   EXPECT_NEAR(d[0], 5.0, 1e-12);
   EXPECT_NEAR(d[1], 1.0, 1e-12);
-  const SurfaceDistance s = MeasureSurfaceDistance(mesh, "skin", square);
+  const SurfaceDistance s = MeasureSurfaceDistance(mesh, "skin", square.GetPointer());
   EXPECT_EQ(s.count, 4u);
   EXPECT_NEAR(s.mean, 11.0 / 4.0, 1e-12);
   EXPECT_NEAR(s.max, 5.0, 1e-12);
   EXPECT_NEAR(s.sigma, std::sqrt((1 + 4 + 9 + 25) / 4.0 - (11.0 / 4.0) * (11.0 / 4.0)), 1e-12);
-  EXPECT_EQ(MeasureSurfaceDistance(mesh, "absent", square).count, 0u);
-  EXPECT_EQ(MeasureSurfaceDistance(mesh.nodes, {}, square).count, 0u);
+  EXPECT_EQ(MeasureSurfaceDistance(mesh, "absent", square.GetPointer()).count, 0u);
+  EXPECT_EQ(MeasureSurfaceDistance(mesh.nodes, {}, square.GetPointer()).count, 0u);
   vtkNew<vtkPolyData> empty;
-  EXPECT_EQ(MeasureSurfaceDistance(mesh.nodes, {0}, empty).count, 0u);
-  EXPECT_THROW(MeasureSurfaceDistance(mesh, "skin", empty), std::invalid_argument);
+  EXPECT_EQ(MeasureSurfaceDistance(mesh.nodes, {0}, empty.GetPointer()).count, 0u);
+  EXPECT_THROW(MeasureSurfaceDistance(mesh, "skin", empty.GetPointer()), std::invalid_argument);
 }
 
 TEST(CoreControlPoints, MatchedByNameInTheLandmarksOrder)

@@ -9,6 +9,7 @@
 #include "mmrepLandmarkIO.h"
 #include "mmrepSurfaceIO.h"
 
+#include <Eigen/Geometry>
 #include <vtkSMPTools.h>
 
 #include <algorithm>
