@@ -29,7 +29,7 @@
 #include "mmrepFaceFrame.h"
 #include "mmrepFaceGrid.h"
 #include "mmrepFaceLandmarks.h"
-#include "mmrepSymmetryPlane.h"
+#include "mmrepPlane.h"
 
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -84,5 +84,8 @@ FaceAtlas BuildFaceAtlas(vtkPolyData* skin, vtkPolyData* skull, const Plane& pla
 // Landmark names of the atlas, in their order: LeftEyeInnerCorner, LeftEyeOuterCorner,
 // LeftLipCorner, UpperLipCenter, LowerLipCenter.
 const std::vector<std::string>& FaceAtlasLandmarkNames();
+// Those landmarks (world) from the detected ones: eye inner and outer corner, lip corner, upper
+// and lower lip.
+std::vector<Landmark> FaceAtlasLandmarks(const FaceLandmarkSet& landmarks, const FaceFrame& frame);
 
 } // namespace mmrep

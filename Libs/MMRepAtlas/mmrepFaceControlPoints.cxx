@@ -2,9 +2,6 @@
 
 #include "mmrepFaceAtlas.h"
 
-#include <vtkTransform.h>
-#include <vtkTransformPolyDataFilter.h>
-
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -17,15 +14,7 @@ vtkSmartPointer<vtkPolyData> ToLocal(vtkPolyData* world, const FaceFrame& frame)
 {
   double m[16];
   frame.WorldToLocalMatrix(m);
-  auto t = vtkSmartPointer<vtkTransform>::New();
-  t->SetMatrix(m);
-  auto f = vtkSmartPointer<vtkTransformPolyDataFilter>::New();
-  f->SetInputData(world);
-  f->SetTransform(t);
-  f->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
-  f->Update();
-  vtkSmartPointer<vtkPolyData> out = f->GetOutput();
-  return out;
+  return TransformSurface(world, m);
 }
 
 constexpr double kDeg = M_PI / 180.0;
@@ -131,10 +120,10 @@ FaceLandmarkSet DetectWithoutChin(const SurfaceRays& skin, const SurfaceRays& bo
 }
 } // namespace
 
-Eigen::Vector3d FaceCentreOfLocalSkin(vtkPolyData* skinLocal)
+Eigen::Vector3d FaceCentreOfLocalSkin(vtkPolyData* skinLocal, double* headDepth)
 {
   if (!skinLocal || skinLocal->GetNumberOfPoints() == 0)
-    throw std::runtime_error("face control points: the skin surface has no points");
+    throw std::runtime_error("face centre: the skin surface has no points");
   Eigen::Vector3d tip(0, -1e300, 0);
   for (vtkIdType p = 0; p < skinLocal->GetNumberOfPoints(); ++p)
   {
@@ -144,7 +133,7 @@ Eigen::Vector3d FaceCentreOfLocalSkin(vtkPolyData* skinLocal)
       tip = Eigen::Vector3d(q[0], q[1], q[2]);
   }
   if (tip.y() == -1e300)
-    throw std::runtime_error("face control points: no skin within 10 mm of the symmetry plane");
+    throw std::runtime_error("face centre: no skin within 10 mm of the symmetry plane");
   double back = tip.y();
   for (vtkIdType p = 0; p < skinLocal->GetNumberOfPoints(); ++p)
   {
@@ -153,6 +142,8 @@ Eigen::Vector3d FaceCentreOfLocalSkin(vtkPolyData* skinLocal)
     if (std::abs(q[0]) < 10 && std::abs(q[2] - tip.z()) < 10)
       back = std::min(back, q[1]);
   }
+  if (headDepth != nullptr)
+    *headDepth = tip.y() - back;
   return {0, 0.5 * (tip.y() + back), tip.z() - 10};
 }
 
@@ -196,11 +187,7 @@ FaceControlPoints DetectFaceControlPoints(vtkPolyData* skin, vtkPolyData* skull,
          << ", " << p.local.y() << ", " << p.local.z() << ")";
     out.log.push_back(line.str());
   }
-  const FaceLandmarkSet& lm = out.landmarks;
-  // The atlas builder's correspondence between names and detected landmarks.
-  const FacePoint* points[] = {&lm.eyeInner, &lm.eyeOuter, &lm.lipCorner, &lm.upperLip, &lm.lowerLip};
-  for (std::size_t n = 0; n < 5; ++n)
-    out.points.push_back({FaceAtlasLandmarkNames()[n], out.frame.ToWorld(points[n]->local)});
+  out.points = FaceAtlasLandmarks(out.landmarks, out.frame);
   return out;
 }
 

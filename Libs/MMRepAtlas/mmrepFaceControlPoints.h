@@ -7,7 +7,7 @@
 #include "mmrepFEMesh.h"
 #include "mmrepFaceFrame.h"
 #include "mmrepFaceLandmarks.h"
-#include "mmrepSymmetryPlane.h"
+#include "mmrepPlane.h"
 
 #include <vtkPolyData.h>
 
@@ -29,8 +29,9 @@ struct FaceControlPoints
 
 // The atlas builder's face-centre rule on a skin surface given in the local face frame: on the
 // plane, at the level of the nose tip (most anterior skin point within 10 mm of the plane) 10 mm
-// lower, halfway between the tip and the back of the head. Throws for a surface without points.
-Eigen::Vector3d FaceCentreOfLocalSkin(vtkPolyData* skinLocal);
+// lower, halfway between the tip and the back of the head (their distance in *headDepth when
+// given). Throws for a surface without points or without skin within 10 mm of the plane.
+Eigen::Vector3d FaceCentreOfLocalSkin(vtkPolyData* skinLocal, double* headDepth = nullptr);
 
 // The atlas rules first (DetectFaceLandmarks: same points as the atlas's on its reference CT).
 // When they fail (a flat face whose brow is as far forward as the nose, or a volume cut less than

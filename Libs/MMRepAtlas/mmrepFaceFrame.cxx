@@ -2,6 +2,8 @@
 
 #include <vtkIdList.h>
 #include <vtkPoints.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
 
 #include <Eigen/Geometry>
 
@@ -9,6 +11,19 @@
 
 namespace mmrep
 {
+
+vtkSmartPointer<vtkPolyData> TransformSurface(vtkPolyData* surface, const double matrix[16])
+{
+  auto t = vtkSmartPointer<vtkTransform>::New();
+  t->SetMatrix(matrix);
+  auto f = vtkSmartPointer<vtkTransformPolyDataFilter>::New();
+  f->SetInputData(surface);
+  f->SetTransform(t);
+  f->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  f->Update();
+  vtkSmartPointer<vtkPolyData> out = f->GetOutput();
+  return out;
+}
 
 FaceFrame FaceFrame::FromPlane(const Plane& plane, const Eigen::Vector3d& centre)
 {

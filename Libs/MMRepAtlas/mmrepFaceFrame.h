@@ -7,7 +7,7 @@
 // theta = 0 is anterior in the plane, theta > 0 towards the patient's left, phi > 0 upwards.
 #pragma once
 
-#include "mmrepSymmetryPlane.h"
+#include "mmrepPlane.h"
 
 #include <Eigen/Core>
 #include <vtkOBBTree.h>
@@ -34,6 +34,9 @@ struct FaceFrame
   void WorldToLocalMatrix(double m[16]) const;
   void LocalToWorldMatrix(double m[16]) const;
 };
+
+// A surface moved by a 4x4 matrix (row-major, as above), points in double precision.
+vtkSmartPointer<vtkPolyData> TransformSurface(vtkPolyData* surface, const double matrix[16]);
 
 inline Eigen::Vector3d RayDirection(double theta, double phi)
 {

@@ -23,56 +23,10 @@ std::string Describe(const std::string& name, const FacePoint& p)
   return s.str();
 }
 
-} // namespace
-
-int NextExtremum(const std::vector<double>& v, int start, int step, bool wantMin, double delta)
+// Components (4-connected) of the open cells of a rows x cols grid, labelled in scan order:
+// deterministic.
+std::vector<std::vector<int>> OpenComponents(const std::vector<int>& open, int rows, int cols)
 {
-  int best = start;
-  for (int i = start; i >= 0 && i < static_cast<int>(v.size()); i += step)
-  {
-    if (wantMin ? v[i] < v[best] : v[i] > v[best])
-      best = i;
-    if (wantMin ? v[i] > v[best] + delta : v[i] < v[best] - delta)
-      return best;
-  }
-  return -1;
-}
-
-FacePoint SkinHit(const SurfaceRays& skin, const Eigen::Vector3d& centre, double theta, double phi)
-{
-  const auto hit = skin.Last(centre, centre + kFar * RayDirection(theta, phi));
-  if (!hit)
-    throw std::runtime_error("face atlas: a ray from the face centre misses the skin (theta " +
-                             std::to_string(theta / kDeg) + " deg, phi " + std::to_string(phi / kDeg) +
-                             " deg); the centre is not inside the head");
-  FacePoint p;
-  p.theta = theta;
-  p.phi = phi;
-  p.local = *hit;
-  if (theta == 0)
-    p.local.x() = 0; // on the plane exactly
-  return p;
-}
-
-void DetectOrbitAndMouthCorner(const SurfaceRays& skin, const SurfaceRays& bone, const Eigen::Vector3d& centre,
-                               FaceLandmarkSet& lm)
-{
-  // --- Left orbital opening: rays meeting no bone within 25 mm under the skin.
-  const double orbitDepth = 25.0;
-  const double da = 1.0 * kDeg;
-  const double phi0 = lm.nasion.phi - 16 * kDeg, theta0 = 4 * kDeg;
-  const int rows = 22, cols = 57; // phi: nasion -16 .. +5 deg; theta: 4 .. 60 deg
-  std::vector<FacePoint> hits(rows * cols);
-  std::vector<int> open(rows * cols, 0);
-  for (int r = 0; r < rows; ++r)
-    for (int c = 0; c < cols; ++c)
-    {
-      const FacePoint p = SkinHit(skin, centre, theta0 + c * da, phi0 + r * da);
-      const Eigen::Vector3d in = -RayDirection(p.theta, p.phi);
-      hits[r * cols + c] = p;
-      open[r * cols + c] = bone.First(p.local, p.local + orbitDepth * in) ? 0 : 1;
-    }
-  // Components (4-connected), labelled in scan order: deterministic.
   std::vector<int> label(rows * cols, -1);
   std::vector<std::vector<int>> comps;
   for (int s = 0; s < rows * cols; ++s)
@@ -98,6 +52,28 @@ void DetectOrbitAndMouthCorner(const SurfaceRays& skin, const SurfaceRays& bone,
         }
     }
   }
+  return comps;
+}
+
+// Left orbital opening (rays meeting no bone under the skin) and the eye corners.
+void DetectOrbit(const SurfaceRays& skin, const SurfaceRays& bone, const Eigen::Vector3d& centre, FaceLandmarkSet& lm)
+{
+  // --- Left orbital opening: rays meeting no bone within 25 mm under the skin.
+  const double orbitDepth = 25.0;
+  const double da = 1.0 * kDeg;
+  const double phi0 = lm.nasion.phi - 16 * kDeg, theta0 = 4 * kDeg;
+  const int rows = 22, cols = 57; // phi: nasion -16 .. +5 deg; theta: 4 .. 60 deg
+  std::vector<FacePoint> hits(rows * cols);
+  std::vector<int> open(rows * cols, 0);
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c)
+    {
+      const FacePoint p = SkinHit(skin, centre, theta0 + c * da, phi0 + r * da);
+      const Eigen::Vector3d in = -RayDirection(p.theta, p.phi);
+      hits[r * cols + c] = p;
+      open[r * cols + c] = bone.First(p.local, p.local + orbitDepth * in) ? 0 : 1;
+    }
+  const std::vector<std::vector<int>> comps = OpenComponents(open, rows, cols);
   // Expected eye centre: 32 mm lateral of the midline, 4 mm below the nasion.
   const double eyeRadius = (lm.nasion.local - centre).norm();
   const double seedTheta = std::atan2(32.0, lm.nasion.local.y() - centre.y() - 10.0);
@@ -144,8 +120,11 @@ void DetectOrbitAndMouthCorner(const SurfaceRays& skin, const SurfaceRays& bone,
   const double phiMid = phi0 + rMid * da;
   lm.eyeInner = SkinHit(skin, centre, lm.orbitMedialTheta + 3.0 / rho, phiMid);
   lm.eyeOuter = SkinHit(skin, centre, lm.orbitLateralTheta - 6.0 / rho, phiMid + 1.0 / eyeRadius);
+}
 
-  // --- Left mouth corner: follow the lip line laterally until the lips no longer bulge.
+// Left mouth corner: follow the lip line laterally until the lips no longer bulge.
+void DetectMouthCorner(const SurfaceRays& skin, const Eigen::Vector3d& centre, FaceLandmarkSet& lm)
+{
   const double mouthRadius = (lm.stomion.local - centre).norm();
   const double dPhi = 0.5 * kDeg, dTheta = 0.5 * kDeg;
   const int halfRows = static_cast<int>(std::ceil(8.0 / mouthRadius / dPhi)); // +-8 mm around the line
@@ -188,6 +167,44 @@ void DetectOrbitAndMouthCorner(const SurfaceRays& skin, const SurfaceRays& bone,
   if (cornerTheta < 0)
     throw std::runtime_error("face landmarks: cannot find the left mouth corner (the lip line does not end within 35 mm)");
   lm.lipCorner = SkinHit(skin, centre, cornerTheta, linePhi);
+}
+
+} // namespace
+
+int NextExtremum(const std::vector<double>& v, int start, int step, bool wantMin, double delta)
+{
+  int best = start;
+  for (int i = start; i >= 0 && i < static_cast<int>(v.size()); i += step)
+  {
+    if (wantMin ? v[i] < v[best] : v[i] > v[best])
+      best = i;
+    if (wantMin ? v[i] > v[best] + delta : v[i] < v[best] - delta)
+      return best;
+  }
+  return -1;
+}
+
+FacePoint SkinHit(const SurfaceRays& skin, const Eigen::Vector3d& centre, double theta, double phi)
+{
+  const auto hit = skin.Last(centre, centre + kFar * RayDirection(theta, phi));
+  if (!hit)
+    throw std::runtime_error("face atlas: a ray from the face centre misses the skin (theta " +
+                             std::to_string(theta / kDeg) + " deg, phi " + std::to_string(phi / kDeg) +
+                             " deg); the centre is not inside the head");
+  FacePoint p;
+  p.theta = theta;
+  p.phi = phi;
+  p.local = *hit;
+  if (theta == 0)
+    p.local.x() = 0; // on the plane exactly
+  return p;
+}
+
+void DetectOrbitAndMouthCorner(const SurfaceRays& skin, const SurfaceRays& bone, const Eigen::Vector3d& centre,
+                               FaceLandmarkSet& lm)
+{
+  DetectOrbit(skin, bone, centre, lm);
+  DetectMouthCorner(skin, centre, lm);
 }
 
 FaceLandmarkSet DetectFaceLandmarks(const SurfaceRays& skin, const SurfaceRays& bone, const Eigen::Vector3d& centre)

@@ -1,6 +1,8 @@
 // The atlas's mouth slit and jaw (rules in mmrepFaceMouth.h).
 #include "mmrepFaceMouth.h"
 
+#include <Eigen/Geometry>
+
 #include "mmrepJaw.h"
 #include "mmrepLipContact.h"
 

@@ -1,5 +1,6 @@
 #include "mmrepHalfModel.h"
 
+#include "mmrepBoundaryFaces.h"
 #include "mmrepElementLocation.h"
 
 #include <Eigen/Geometry>
@@ -33,89 +34,11 @@ std::vector<std::int32_t> Restrict(const std::vector<std::int32_t>& ids, const s
       out.push_back(newIndex[static_cast<std::size_t>(id)]);
   return out;
 }
-} // namespace
 
-bool IsHalfModel(const FEMesh& mesh)
+// Which side of the plane each node is on; the plane set's nodes must lie on it.
+std::vector<Side> NodeSides(const FEMesh& full, const Plane& plane, const HalfModelOptions& options)
 {
-  const auto it = mesh.nodeSets.find(kSymmetryBoundarySet);
-  return it != mesh.nodeSets.end() && !it->second.empty();
-}
-
-Plane SymmetryPlaneOf(const FEMesh& half)
-{
-  if (!IsHalfModel(half))
-    throw std::invalid_argument("the model is not a half model (no node set '" + kSymmetryBoundarySet + "')");
-  return FitPlaneToNodeSet(half, kSymmetryBoundarySet);
-}
-
-std::vector<std::vector<std::int32_t>> SymmetryBoundaryFaces(const FEMesh& half)
-{
-  static const std::vector<std::vector<int>> hexFaces{{0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4},
-                                                      {3, 7, 6, 2}, {0, 3, 2, 1}, {4, 5, 6, 7}};
-  static const std::vector<std::vector<int>> wedgeFaces{{0, 1, 2}, {3, 5, 4}, {0, 3, 4, 1}, {1, 4, 5, 2}, {2, 5, 3, 0}};
-  static const std::vector<std::vector<int>> tetFaces{{0, 1, 3}, {1, 2, 3}, {2, 0, 3}, {0, 2, 1}};
-  std::vector<char> onPlane(half.nodes.size(), 0);
-  if (const auto it = half.nodeSets.find(kSymmetryBoundarySet); it != half.nodeSets.end())
-    for (auto n : it->second)
-      onPlane[static_cast<std::size_t>(n)] = 1;
-  // Sorted node list -> (elements sharing the face, the face as seen from its first element, that element).
-  std::map<std::vector<std::int32_t>, std::pair<int, std::pair<std::vector<std::int32_t>, std::size_t>>> faces;
-  for (std::size_t i = 0; i < half.elements.size(); ++i)
-  {
-    const Element& e = half.elements[i];
-    const auto* table = e.type == ElementType::Hexahedron ? &hexFaces
-                        : e.type == ElementType::Wedge    ? &wedgeFaces
-                        : e.type == ElementType::Tetrahedron ? &tetFaces
-                                                             : nullptr;
-    if (table == nullptr)
-      continue;
-    for (const auto& f : *table)
-    {
-      std::vector<std::int32_t> ids;
-      for (int k : f)
-        ids.push_back(e.nodes[static_cast<std::size_t>(k)]);
-      if (!std::all_of(ids.begin(), ids.end(), [&](std::int32_t n) { return onPlane[static_cast<std::size_t>(n)] != 0; }))
-        continue;
-      auto key = ids;
-      std::sort(key.begin(), key.end());
-      auto& entry = faces[key];
-      if (entry.first++ == 0)
-        entry.second = {ids, i};
-    }
-  }
-  std::vector<std::vector<std::int32_t>> out;
-  for (auto& [key, entry] : faces)
-  {
-    if (entry.first != 1)
-      continue;
-    auto& [ids, element] = entry.second;
-    // Newell normal of the face against the direction from the element's centroid to the face's.
-    const Element& e = half.elements[element];
-    Point3 normal = Point3::Zero(), faceCentre = Point3::Zero(), centre = Point3::Zero();
-    for (std::size_t k = 0; k < ids.size(); ++k)
-    {
-      const Point3& a = half.nodes[static_cast<std::size_t>(ids[k])];
-      const Point3& b = half.nodes[static_cast<std::size_t>(ids[(k + 1) % ids.size()])];
-      normal += a.cross(b);
-      faceCentre += a / static_cast<double>(ids.size());
-    }
-    for (int k = 0; k < NodeCount(e.type); ++k)
-      centre += half.nodes[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])] / NodeCount(e.type);
-    if (normal.dot(faceCentre - centre) < 0)
-      std::reverse(ids.begin(), ids.end());
-    out.push_back(ids);
-  }
-  return out;
-}
-
-FEMesh LeftHalfModel(const FEMesh& full, const HalfModelOptions& options)
-{
-  full.Validate();
-  if (IsHalfModel(full))
-    throw std::invalid_argument("the model already is a half model (it has node set '" + kSymmetryBoundarySet + "')");
-  const Plane plane = FitPlaneToNodeSet(full, options.planeSet);
   const double tol = options.tolerance;
-
   std::vector<char> onPlaneSet(full.nodes.size(), 0);
   for (auto n : full.nodeSets.at(options.planeSet))
   {
@@ -131,8 +54,13 @@ FEMesh LeftHalfModel(const FEMesh& full, const HalfModelOptions& options)
     const double d = plane.SignedDistance(full.nodes[i]);
     side[i] = onPlaneSet[i] || std::abs(d) <= tol ? Side::Plane : d > 0 ? Side::Left : Side::Right;
   }
+  return side;
+}
 
-  // Solid elements: centroid side; an element with nodes on both sides is not cut along the plane.
+// Solid elements: centroid side; an element with nodes on both sides is not cut along the plane.
+std::vector<char> LeftSolids(const FEMesh& full, const Plane& plane, const std::vector<Side>& side,
+                             const HalfModelOptions& options)
+{
   std::vector<char> keepElement(full.elements.size(), 0);
   for (std::size_t i = 0; i < full.elements.size(); ++i)
   {
@@ -155,14 +83,20 @@ FEMesh LeftHalfModel(const FEMesh& full, const HalfModelOptions& options)
       throw std::invalid_argument("solid element " + std::to_string(i) + " lies flat on the symmetry plane");
     keepElement[i] = left && plane.SignedDistance(centroid) > 0;
   }
+  return keepElement;
+}
 
-  // Muscle tracks: maximal runs of left/plane points that hold a left point.
-  struct Piece
-  {
-    std::string name;
-    std::size_t begin, end; // track points [begin, end)
-    const MuscleTrack* track;
-  };
+// A left piece of a muscle track: track points [begin, end).
+struct Piece
+{
+  std::string name;
+  std::size_t begin, end;
+  const MuscleTrack* track;
+};
+
+// Muscle tracks: maximal runs of left/plane points that hold a left point.
+std::vector<Piece> LeftTrackPieces(const FEMesh& full, const std::vector<Side>& side)
+{
   std::vector<Piece> pieces;
   for (const auto& [name, track] : full.muscles)
   {
@@ -190,11 +124,13 @@ FEMesh LeftHalfModel(const FEMesh& full, const HalfModelOptions& options)
       }
     }
   }
-  for (const auto& piece : pieces)
-    for (std::size_t c = piece.begin; c + 1 < piece.end; ++c)
-      keepElement[static_cast<std::size_t>(piece.track->cables[c])] = 1;
+  return pieces;
+}
 
-  // Nodes: those of kept elements and tracks, and free nodes (in no element) on the left or the plane.
+// Nodes: those of kept elements and tracks, and free nodes (in no element) on the left or the plane.
+std::vector<char> KeptNodes(const FEMesh& full, const std::vector<char>& keepElement, const std::vector<Piece>& pieces,
+                            const std::vector<Side>& side)
+{
   std::vector<char> keepNode(full.nodes.size(), 0), referenced(full.nodes.size(), 0);
   for (std::size_t i = 0; i < full.elements.size(); ++i)
     for (int k = 0; k < NodeCount(full.elements[i].type); ++k)
@@ -211,6 +147,116 @@ FEMesh LeftHalfModel(const FEMesh& full, const HalfModelOptions& options)
       keepNode[static_cast<std::size_t>(piece.track->nodes[k])] = 1;
   for (std::size_t i = 0; i < full.nodes.size(); ++i)
     keepNode[i] = keepNode[i] || (!referenced[i] && side[i] != Side::Right);
+  return keepNode;
+}
+
+// A point on the plane embedded in a right element: the kept element nearest to it.
+Embedding ReEmbed(const FEMesh& half, const Point3& x, const Piece& piece, std::size_t k, double tol)
+{
+  Embedding emb;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t e = 0; e < half.elements.size(); ++e)
+  {
+    if (half.elements[e].type == ElementType::Cable)
+      continue;
+    const ElementLocation hit = LocateInElement(half, half.elements[e], x);
+    const double d = hit.distance;
+    if (d < best)
+    {
+      best = d;
+      emb = {static_cast<std::int32_t>(e), hit.pcoords};
+    }
+    if (d == 0)
+      break;
+  }
+  if (!(best <= tol))
+    throw std::invalid_argument("muscle '" + piece.name + "': point " + std::to_string(k) +
+                                " lies in no element of the left half");
+  return emb;
+}
+
+// The track pieces in the half's numbering.
+void AddTrackPieces(const FEMesh& full, const std::vector<Piece>& pieces, const std::vector<std::int32_t>& nodeIndex,
+                    const std::vector<std::int32_t>& elementIndex, double tol, FEMesh& half)
+{
+  for (const auto& piece : pieces)
+  {
+    const MuscleTrack& track = *piece.track;
+    MuscleTrack out;
+    out.maximumForce = track.maximumForce;
+    for (std::size_t k = piece.begin; k < piece.end; ++k)
+    {
+      const auto n = static_cast<std::size_t>(track.nodes[k]);
+      out.nodes.push_back(nodeIndex[n]);
+      if (k + 1 < piece.end)
+        out.cables.push_back(elementIndex[static_cast<std::size_t>(track.cables[k])]);
+      if (track.embedding.empty())
+        continue;
+      Embedding emb = track.embedding[k];
+      if (elementIndex[static_cast<std::size_t>(emb.element)] >= 0)
+        emb.element = elementIndex[static_cast<std::size_t>(emb.element)];
+      else
+        emb = ReEmbed(half, full.nodes[n], piece, k, tol);
+      out.embedding.push_back(emb);
+    }
+    half.muscles[piece.name] = std::move(out);
+  }
+}
+} // namespace
+
+bool IsHalfModel(const FEMesh& mesh)
+{
+  const auto it = mesh.nodeSets.find(kSymmetryBoundarySet);
+  return it != mesh.nodeSets.end() && !it->second.empty();
+}
+
+Plane SymmetryPlaneOf(const FEMesh& half)
+{
+  if (!IsHalfModel(half))
+    throw std::invalid_argument("the model is not a half model (no node set '" + kSymmetryBoundarySet + "')");
+  return FitPlaneToNodeSet(half, kSymmetryBoundarySet);
+}
+
+std::vector<std::vector<std::int32_t>> SymmetryBoundaryFaces(const FEMesh& half)
+{
+  std::vector<std::vector<std::int32_t>> out;
+  const std::vector<char> onPlane = NodeSetMask(half, kSymmetryBoundarySet);
+  for (const BoundaryFace& face : BoundaryFaces(half, &onPlane))
+  {
+    std::vector<std::int32_t> ids(face.nodes.begin(), face.nodes.begin() + face.NodeCount());
+    // Newell normal of the face against the direction from the element's centroid to the face's.
+    const Element& e = half.elements[static_cast<std::size_t>(face.element)];
+    Point3 normal = Point3::Zero(), faceCentre = Point3::Zero(), centre = Point3::Zero();
+    for (std::size_t k = 0; k < ids.size(); ++k)
+    {
+      const Point3& a = half.nodes[static_cast<std::size_t>(ids[k])];
+      const Point3& b = half.nodes[static_cast<std::size_t>(ids[(k + 1) % ids.size()])];
+      normal += a.cross(b);
+      faceCentre += a / static_cast<double>(ids.size());
+    }
+    for (int k = 0; k < NodeCount(e.type); ++k)
+      centre += half.nodes[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])] / NodeCount(e.type);
+    if (normal.dot(faceCentre - centre) < 0)
+      std::reverse(ids.begin(), ids.end());
+    out.push_back(ids);
+  }
+  return out;
+}
+
+FEMesh LeftHalfModel(const FEMesh& full, const HalfModelOptions& options)
+{
+  full.Validate();
+  if (IsHalfModel(full))
+    throw std::invalid_argument("the model already is a half model (it has node set '" + kSymmetryBoundarySet + "')");
+  const Plane plane = FitPlaneToNodeSet(full, options.planeSet);
+  const double tol = options.tolerance;
+  const std::vector<Side> side = NodeSides(full, plane, options);
+  std::vector<char> keepElement = LeftSolids(full, plane, side, options);
+  const std::vector<Piece> pieces = LeftTrackPieces(full, side);
+  for (const auto& piece : pieces)
+    for (std::size_t c = piece.begin; c + 1 < piece.end; ++c)
+      keepElement[static_cast<std::size_t>(piece.track->cables[c])] = 1;
+  const std::vector<char> keepNode = KeptNodes(full, keepElement, pieces, side);
 
   FEMesh half;
   std::vector<std::int32_t> nodeIndex(full.nodes.size(), -1), elementIndex(full.elements.size(), -1);
@@ -235,48 +281,7 @@ FEMesh LeftHalfModel(const FEMesh& full, const HalfModelOptions& options)
   for (const auto& [name, ids] : full.elementSets)
     if (auto kept = Restrict(ids, elementIndex); !kept.empty())
       half.elementSets[name] = std::move(kept);
-  for (const auto& piece : pieces)
-  {
-    const MuscleTrack& track = *piece.track;
-    MuscleTrack out;
-    out.maximumForce = track.maximumForce;
-    for (std::size_t k = piece.begin; k < piece.end; ++k)
-    {
-      const auto n = static_cast<std::size_t>(track.nodes[k]);
-      out.nodes.push_back(nodeIndex[n]);
-      if (k + 1 < piece.end)
-        out.cables.push_back(elementIndex[static_cast<std::size_t>(track.cables[k])]);
-      if (track.embedding.empty())
-        continue;
-      Embedding emb = track.embedding[k];
-      if (elementIndex[static_cast<std::size_t>(emb.element)] >= 0)
-        emb.element = elementIndex[static_cast<std::size_t>(emb.element)];
-      else
-      {
-        // A point on the plane embedded in a right element: the kept element nearest to it.
-        double best = std::numeric_limits<double>::infinity();
-        for (std::size_t e = 0; e < half.elements.size(); ++e)
-        {
-          if (half.elements[e].type == ElementType::Cable)
-            continue;
-          const ElementLocation hit = LocateInElement(half, half.elements[e], full.nodes[n]);
-          const double d = hit.distance;
-          if (d < best)
-          {
-            best = d;
-            emb = {static_cast<std::int32_t>(e), hit.pcoords};
-          }
-          if (d == 0)
-            break;
-        }
-        if (!(best <= tol))
-          throw std::invalid_argument("muscle '" + piece.name + "': point " + std::to_string(k) +
-                                      " lies in no element of the left half");
-      }
-      out.embedding.push_back(emb);
-    }
-    half.muscles[piece.name] = std::move(out);
-  }
+  AddTrackPieces(full, pieces, nodeIndex, elementIndex, tol, half);
   for (const auto& l : full.landmarks)
     if (plane.SignedDistance(l.position) >= -tol)
       half.landmarks.push_back(l);

@@ -1,6 +1,8 @@
 // Mouth slit: closing and reopening it, its facing surfaces and the gap between them.
 #include "mmrepLipContact.h"
 
+#include "mmrepBoundaryFaces.h"
+
 #include <Eigen/Geometry>
 
 #include <vtkCellArray.h>
@@ -32,9 +34,6 @@ const std::vector<std::int32_t>* ElementSet(const FEMesh& mesh, const std::strin
   const auto it = mesh.elementSets.find(name);
   return it == mesh.elementSets.end() || it->second.empty() ? nullptr : &it->second;
 }
-
-// C3D8 faces S1..S6 in VTK's (= Abaqus') hexahedron node order, counter-clockwise from outside.
-constexpr int kHexFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
 
 } // namespace
 
@@ -113,13 +112,15 @@ std::vector<LipContactFace> LipContactFaces(const FEMesh& mesh, bool upperLip)
     const Element& element = mesh.elements[static_cast<std::size_t>(e)];
     if (element.type != ElementType::Hexahedron)
       continue;
+    // Local face f is the C3D8 face S(f+1).
+    const auto& hexFaces = LocalFaces(ElementType::Hexahedron);
     for (int f = 0; f < 6; ++f)
     {
       LipContactFace face{e, f + 1, {}};
       bool all = true;
       for (int c = 0; c < 4 && all; ++c)
       {
-        face.nodes[static_cast<std::size_t>(c)] = element.nodes[static_cast<std::size_t>(kHexFaces[f][c])];
+        face.nodes[static_cast<std::size_t>(c)] = element.nodes[static_cast<std::size_t>(hexFaces[static_cast<std::size_t>(f)][static_cast<std::size_t>(c)])];
         all = std::binary_search(contact.begin(), contact.end(), face.nodes[static_cast<std::size_t>(c)]);
       }
       if (all)

@@ -2,19 +2,12 @@
 // and DICOM series directories (ITK's GDCM series reader, first series found, sorted by position).
 #pragma once
 
-#include <itkImage.h>
-#include <itkVector.h>
+#include "mmrepImageTypes.h"
 
 #include <string>
 
 namespace mmrep
 {
-
-using CTImage = itk::Image<short, 3>;   // CT volumes as stored by scanners (HU or scanner units)
-using FloatImage = itk::Image<float, 3>; // distance maps and other scalar fields
-using MaskImage = itk::Image<unsigned char, 3>; // binary masks: 1 inside, 0 outside
-// Displacement fields (mm, LPS): the transform's direction is documented where a field is made.
-using DisplacementField = itk::Image<itk::Vector<float, 3>, 3>;
 
 // Reads a file or a DICOM directory. Throws std::runtime_error naming the path on any problem
 // (missing, truncated, not 3D, unknown format).

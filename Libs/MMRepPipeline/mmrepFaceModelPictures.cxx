@@ -1,6 +1,7 @@
 #include "mmrepFaceModelPictures.h"
 
 #include "mmrepSnapshot.h"
+#include "mmrepSurfaceDistance.h"
 
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
@@ -72,21 +73,11 @@ std::vector<double> NodeSurfaceDistances(const FEMesh& mesh, const std::string& 
 {
   std::vector<double> d(mesh.nodes.size(), 0.0);
   const auto it = mesh.nodeSets.find(set);
-  if (it == mesh.nodeSets.end() || surface == nullptr || surface->GetNumberOfCells() == 0)
+  if (it == mesh.nodeSets.end())
     return d;
-  vtkNew<vtkStaticCellLocator> locator;
-  locator->SetDataSet(surface);
-  locator->BuildLocator();
-  vtkNew<vtkGenericCell> cell;
-  for (const auto n : it->second)
-  {
-    const auto& p = mesh.nodes[static_cast<std::size_t>(n)];
-    double x[3] = {p.x(), p.y(), p.z()}, closest[3], d2 = 0;
-    vtkIdType cellId = -1;
-    int subId = 0;
-    locator->FindClosestPoint(x, closest, cell, cellId, subId, d2);
-    d[static_cast<std::size_t>(n)] = std::sqrt(d2);
-  }
+  const std::vector<double> measured = NodeSurfaceDistances(mesh.nodes, it->second, surface);
+  for (std::size_t k = 0; k < measured.size(); ++k)
+    d[static_cast<std::size_t>(it->second[k])] = measured[k];
   return d;
 }
 

@@ -1,16 +1,17 @@
 #include "mmrepFaceModelPipeline.h"
 #include "mmrepFieldOfView.h"
 
+#include "mmrepBoundaryFaces.h"
+#include "mmrepControlPointMatch.h"
+
 #include "mmrepCanonicalVoxelOrder.h"
 #include "mmrepHeadSegmentation.h"
 #include "mmrepSurfaceDistanceMap.h"
 #include "mmrepSurfaceExtraction.h"
 #include "mmrepSymmetryPlane.h"
 
-#include <vtkCellArray.h>
-#include <vtkNew.h>
-#include <vtkPoints.h>
 #include <vtkBox.h>
+#include <vtkNew.h>
 #include <vtkExtractPolyDataGeometry.h>
 
 #include <algorithm>
@@ -69,39 +70,18 @@ ModelAccuracy Measure(const std::string& state, const FEMesh& mesh, vtkPolyData*
 std::vector<Point3> MatchControlPoints(const CTImage* ct, const std::vector<Landmark>& points, const FEMesh& atlas,
                                        std::vector<std::string>& names)
 {
-  if (points.empty())
-    throw std::invalid_argument("control points: none given (the atlas needs " +
-                                std::to_string(atlas.landmarks.size()) + ")");
-  if (atlas.landmarks.empty())
-    throw std::invalid_argument("atlas: it has no landmarks to match control points with");
-  std::map<std::string, Point3> byName;
-  for (const auto& p : points)
+  std::vector<Point3> targets = MatchControlPointsByName(atlas.landmarks, points);
+  for (std::size_t i = 0; i < targets.size(); ++i)
   {
-    if (p.name.empty())
-      throw std::invalid_argument("control points: a point has no name");
-    if (!byName.emplace(p.name, p.position).second)
-      throw std::invalid_argument("control points: '" + p.name + "' is given twice");
-  }
-  std::vector<Point3> targets;
-  for (const auto& l : atlas.landmarks)
-  {
-    const auto it = byName.find(l.name);
-    if (it == byName.end())
-      throw std::invalid_argument("control points: '" + l.name + "' is missing (the atlas landmarks are named" +
-                                  [&] {
-                                    std::string s;
-                                    for (const auto& a : atlas.landmarks)
-                                      s += " " + a.name;
-                                    return s;
-                                  }() +
-                                  ")");
-    bool inside = it->second.allFinite();
+    const Landmark& l = atlas.landmarks[i];
+    const Point3& target = targets[i];
+    bool inside = target.allFinite();
     if (ct != nullptr && inside)
     {
       const auto region = ct->GetLargestPossibleRegion();
       CTImage::PointType p;
       for (unsigned a = 0; a < 3; ++a)
-        p[a] = it->second[a];
+        p[a] = target[a];
       const auto index = ct->TransformPhysicalPointToContinuousIndex<double>(p);
       for (unsigned a = 0; a < 3 && inside; ++a)
         inside = index[a] >= static_cast<double>(region.GetIndex(a)) - 0.5 &&
@@ -110,16 +90,12 @@ std::vector<Point3> MatchControlPoints(const CTImage* ct, const std::vector<Land
     if (!inside)
     {
       std::ostringstream s;
-      s << "control points: '" << l.name << "' at (" << it->second.x() << ", " << it->second.y() << ", "
-        << it->second.z() << ") mm LPS lies outside the CT volume (check the coordinate system: LPS vs RAS)";
+      s << "control points: '" << l.name << "' at (" << target.x() << ", " << target.y() << ", " << target.z()
+        << ") mm LPS lies outside the CT volume (check the coordinate system: LPS vs RAS)";
       throw std::invalid_argument(s.str());
     }
     names.push_back(l.name);
-    targets.push_back(it->second);
   }
-  for (const auto& p : points)
-    if (std::none_of(atlas.landmarks.begin(), atlas.landmarks.end(), [&](const Landmark& l) { return l.name == p.name; }))
-      throw std::invalid_argument("control points: '" + p.name + "' is not an atlas landmark");
   return targets;
 }
 
@@ -191,9 +167,13 @@ LocalRefinementOptions RefinementOptionsFor(const FaceModelOptions& options, con
 
 namespace
 {
-// The atlas is valid and has the node sets and muscles the stages use.
-void CheckAtlas(const FEMesh& atlas, const FaceModelOptions& options)
+// The atlas's sets and muscles, the control points (matched to the atlas's landmarks, inside the
+// CT) and the field of view, before any stage runs.
+void CheckInputs(const CTImage* ct, const std::vector<Landmark>& controlPoints, const FEMesh& atlas,
+                 const FaceModelOptions& options, FaceModelResult& result)
 {
+  if (ct == nullptr)
+    throw std::invalid_argument("face model: no CT image");
   atlas.Validate();
   for (const auto& set : {options.registration.skinSet, options.registration.skullSet, options.registration.lipsSet,
                           std::string("midsagittal")})
@@ -201,17 +181,25 @@ void CheckAtlas(const FEMesh& atlas, const FaceModelOptions& options)
       throw std::invalid_argument("atlas: node set '" + set + "' is missing");
   if (atlas.muscles.empty())
     throw std::invalid_argument("atlas: it has no muscle tracks");
+
+  result.controlTargets = MatchControlPoints(ct, controlPoints, atlas, result.controlNames);
+  if (options.allowPartialFieldOfView)
+    result.fieldOfViewMissing =
+      MissingFieldOfView(ct, atlas, options.registration.skinSet, result.controlTargets, options.fieldOfViewMargin);
+  else
+    CheckFieldOfView(ct, atlas, options.registration.skinSet, result.controlTargets, options.fieldOfViewMargin);
+  // The maps of R cover at least the face region: a spacing that cannot fit it is refused now.
+  if (std::array<double, 6> face; FaceRegionBounds(atlas, options.registration.skinSet, result.controlTargets, face))
+    CheckDistanceMapGrid(face, options.registration.mapMargin, options.registration.mapSpacing, "--mapSpacing");
 }
+
 } // namespace
 
 FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& controlPoints, const FEMesh& atlas,
                                const FaceModelOptions& options)
 {
-  if (ct == nullptr)
-    throw std::invalid_argument("face model: no CT image");
-  CheckAtlas(atlas, options);
-
   FaceModelResult result;
+  CheckInputs(ct, controlPoints, atlas, options, result);
   const auto t0 = Clock::now();
   const double weights[] = {0.25, 0.15, 0.35, 0.1, 0.1, 0.05}; // share of the time, per stage
   std::size_t stageIndex = 0;
@@ -226,16 +214,6 @@ FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& c
     if (options.progress)
       options.progress(name, std::min(1.0, done));
   };
-
-  result.controlTargets = MatchControlPoints(ct, controlPoints, atlas, result.controlNames);
-  if (options.allowPartialFieldOfView)
-    result.fieldOfViewMissing =
-      MissingFieldOfView(ct, atlas, options.registration.skinSet, result.controlTargets, options.fieldOfViewMargin);
-  else
-    CheckFieldOfView(ct, atlas, options.registration.skinSet, result.controlTargets, options.fieldOfViewMargin);
-  // The maps of R cover at least the face region: a spacing that cannot fit it is refused now.
-  if (std::array<double, 6> face; FaceRegionBounds(atlas, options.registration.skinSet, result.controlTargets, face))
-    CheckDistanceMapGrid(face, options.registration.mapMargin, options.registration.mapSpacing, "--mapSpacing");
 
   // 1. Surfaces.
   auto t = Clock::now();
@@ -326,55 +304,8 @@ FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& c
 
 vtkSmartPointer<vtkPolyData> ModelSkinSurface(const FEMesh& mesh, const std::string& skinSet)
 {
-  std::vector<char> onSkin(mesh.nodes.size(), 0);
-  if (const auto it = mesh.nodeSets.find(skinSet); it != mesh.nodeSets.end())
-    for (const auto n : it->second)
-      onSkin[static_cast<std::size_t>(n)] = 1;
-  // Boundary faces = faces used by exactly one solid; VTK's local face orders.
-  static const std::vector<std::vector<int>> hexFaces = {{0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4},
-                                                         {3, 7, 6, 2}, {0, 3, 2, 1}, {4, 5, 6, 7}};
-  static const std::vector<std::vector<int>> wedgeFaces = {{0, 1, 2}, {3, 5, 4}, {0, 3, 4, 1}, {1, 4, 5, 2}, {2, 5, 3, 0}};
-  static const std::vector<std::vector<int>> tetFaces = {{0, 1, 3}, {1, 2, 3}, {2, 0, 3}, {0, 2, 1}};
-  std::map<std::vector<std::int32_t>, std::pair<int, std::vector<std::int32_t>>> faces; // sorted key -> (uses, face)
-  for (const auto& e : mesh.elements)
-  {
-    const auto* local = e.type == ElementType::Hexahedron ? &hexFaces
-                        : e.type == ElementType::Wedge    ? &wedgeFaces
-                        : e.type == ElementType::Tetrahedron ? &tetFaces
-                                                             : nullptr;
-    if (!local)
-      continue;
-    for (const auto& f : *local)
-    {
-      std::vector<std::int32_t> face;
-      for (int k : f)
-        face.push_back(e.nodes[static_cast<std::size_t>(k)]);
-      auto key = face;
-      std::sort(key.begin(), key.end());
-      auto& entry = faces[key];
-      if (entry.first++ == 0)
-        entry.second = face;
-    }
-  }
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.nodes.size()));
-  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
-    points->SetPoint(static_cast<vtkIdType>(i), mesh.nodes[i].data());
-  vtkNew<vtkCellArray> polys;
-  for (const auto& [key, entry] : faces)
-  {
-    if (entry.first != 1)
-      continue;
-    if (!std::all_of(entry.second.begin(), entry.second.end(), [&](std::int32_t n) { return onSkin[static_cast<std::size_t>(n)]; }))
-      continue;
-    std::vector<vtkIdType> ids(entry.second.begin(), entry.second.end());
-    polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-  }
-  auto surface = vtkSmartPointer<vtkPolyData>::New();
-  surface->SetPoints(points);
-  surface->SetPolys(polys);
-  return surface;
+  const std::vector<char> onSkin = NodeSetMask(mesh, skinSet);
+  return BoundaryPolygons(mesh, &onSkin);
 }
 
 } // namespace mmrep

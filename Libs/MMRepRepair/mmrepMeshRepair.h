@@ -7,7 +7,7 @@
 #pragma once
 
 #include "mmrepFEMesh.h"
-#include "mmrepSymmetryPlane.h"
+#include "mmrepPlane.h"
 
 #include <vtkPolyData.h>
 

@@ -2,6 +2,7 @@
 // their surfaces while the repair slides them, and to measure surface accuracy.
 #pragma once
 
+#include "mmrepBoundaryFaces.h" // BoundarySurface, the surface a mesh's own nodes are projected onto
 #include "mmrepFEMesh.h"
 
 #include <vtkAbstractCellLocator.h>
@@ -26,6 +27,7 @@ public:
   Point3 Normal(const Point3& p) const;
 
 private:
+  Point3 Closest(const Point3& p, vtkIdType& cellId) const; // leaves the closest cell in cell_
   vtkSmartPointer<vtkPolyData> surface_;
   vtkSmartPointer<vtkStaticCellLocator> locator_;
   vtkSmartPointer<vtkGenericCell> cell_; // scratch cell: the projector is not thread-safe
@@ -36,9 +38,5 @@ private:
 // equidistant cells FindClosestPoint returns; ties are common here (points on the symmetry plane
 // of a mirror-symmetric surface), so a parallel build makes projections, and repairs, vary.
 void BuildLocatorSequentially(vtkAbstractCellLocator* locator);
-
-// Boundary faces of the mesh's solid elements (faces used by one element only), quads split into
-// two triangles; only faces whose nodes all have nodeMask[node] != 0 when a mask is given.
-vtkSmartPointer<vtkPolyData> BoundarySurface(const FEMesh& mesh, const std::vector<char>* nodeMask = nullptr);
 
 } // namespace mmrep

@@ -197,18 +197,7 @@ MeshTangleContext MakeTangleContext(FEMesh mesh, vtkSmartPointer<vtkPolyData> sk
   const auto mid = m.nodeSets.find("midsagittal");
   if (mid == m.nodeSets.end() || mid->second.size() < 3)
     throw std::runtime_error("atlas tangles: the mesh has no midsagittal node set");
-  Point3 centre = Point3::Zero();
-  for (const auto id : mid->second)
-    centre += m.nodes[id];
-  centre /= static_cast<double>(mid->second.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (const auto id : mid->second)
-    cov += (m.nodes[id] - centre) * (m.nodes[id] - centre).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
-  c.plane.point = centre;
-  c.plane.normal = solver.eigenvectors().col(0).normalized();
-  if (c.plane.normal.x() < 0)
-    c.plane.normal = -c.plane.normal;
+  c.plane = FitPlaneToNodeSet(m, "midsagittal");
 
   // Mirror partners of the solid elements' nodes (mutual nearest mirror images within 1e-6 of the
   // diagonal); nodes of no solid element (embedded muscle points) are their own partners.

@@ -11,7 +11,7 @@
 
 #include "mmrepFEMesh.h"
 #include "mmrepMeshRepair.h"
-#include "mmrepSymmetryPlane.h"
+#include "mmrepPlane.h"
 #include "mmrepTangledMeshGenerator.h"
 
 #include <vtkPolyData.h>

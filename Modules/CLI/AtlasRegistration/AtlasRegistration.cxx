@@ -5,6 +5,7 @@
 #include "mmrepImageIO.h"
 #include "mmrepFEMeshIO.h"
 #include "mmrepLandmarkIO.h"
+#include "mmrepPlane.h"
 #include "mmrepRegistrationGrids.h"
 #include "mmrepResourceBudget.h"
 #include "mmrepSurfaceIO.h"
@@ -19,21 +20,6 @@ extern const char AtlasRegistrationXML[];
 namespace
 {
 using mmrep::cli::ModuleError;
-
-mmrep::Plane PlaneArgument(const mmrep::cli::Arguments& args, const std::string& name)
-{
-  const auto v = args.Doubles(name);
-  if (v.size() != 6)
-    throw ModuleError("--" + name + ": expected six numbers (point x,y,z and normal nx,ny,nz), got " +
-                      std::to_string(v.size()));
-  mmrep::Plane p;
-  p.point = Eigen::Vector3d(v[0], v[1], v[2]);
-  p.normal = Eigen::Vector3d(v[3], v[4], v[5]);
-  if (!p.point.allFinite() || !p.normal.allFinite() || !(p.normal.norm() > 1e-9))
-    throw ModuleError("--" + name + ": the normal must be finite and non-zero");
-  p.normal.normalize();
-  return p;
-}
 
 void CheckExtension(const std::string& path, std::initializer_list<const char*> allowed, const std::string& what)
 {
@@ -85,10 +71,10 @@ void Run(mmrep::cli::ModuleContext& ctx)
   mmrep::CheckSubjectMapGrids(subject, mmrep::AtlasRegistrationOptions{}.mapMargin, args.Double("mapSpacing"),
                               "--mapSpacing");
 
-  const mmrep::Plane atlasPlane = args.Given("atlasPlane") ? PlaneArgument(args, "atlasPlane")
+  const mmrep::Plane atlasPlane = args.Given("atlasPlane") ? mmrep::PlaneFromSixNumbers(args.Doubles("atlasPlane"), "--atlasPlane")
                                                            : mmrep::FitPlaneToNodeSet(atlas, "midsagittal");
   if (args.Given("subjectPlane"))
-    subject.plane = PlaneArgument(args, "subjectPlane");
+    subject.plane = mmrep::PlaneFromSixNumbers(args.Doubles("subjectPlane"), "--subjectPlane");
   else
   {
     if (subject.skin->GetNumberOfPolys() == 0)

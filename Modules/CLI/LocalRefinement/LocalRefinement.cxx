@@ -2,6 +2,7 @@
 #include "mmrepAtlasRegistration.h"
 #include "mmrepCLI.h"
 #include "mmrepFEMeshIO.h"
+#include "mmrepPlane.h"
 #include "mmrepSurfaceIO.h"
 
 #include <nlohmann/json.hpp>
@@ -49,16 +50,8 @@ void Run(mmrep::cli::ModuleContext& ctx)
   options.finestLevel = static_cast<int>(args.Int("levels"));
   if (args.Given("subjectPlane"))
   {
-    const auto v = args.Doubles("subjectPlane");
-    if (v.size() != 6)
-      throw ModuleError("--subjectPlane: expected six numbers (point x,y,z and normal nx,ny,nz), got " +
-                        std::to_string(v.size()));
+    options.plane = mmrep::PlaneFromSixNumbers(args.Doubles("subjectPlane"), "--subjectPlane");
     options.symmetric = true;
-    options.plane.point = Eigen::Vector3d(v[0], v[1], v[2]);
-    options.plane.normal = Eigen::Vector3d(v[3], v[4], v[5]);
-    if (!(options.plane.normal.norm() > 1e-9))
-      throw ModuleError("--subjectPlane: the normal must be non-zero");
-    options.plane.normal.normalize();
   }
   options.progress = [&](double f) { ctx.progress.ReportRange(0.05, 0.95, f); };
   const auto result = mmrep::RefineLocally(mesh, skin, options);

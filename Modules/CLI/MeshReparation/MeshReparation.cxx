@@ -4,6 +4,8 @@
 #include "mmrepFEMeshIO.h"
 #include "mmrepHistogramPicture.h"
 #include "mmrepMeshRepair.h"
+#include "mmrepPlane.h"
+#include "mmrepSurfaceDistance.h"
 #include "mmrepRepairSummary.h"
 #include "mmrepSurfaceIO.h"
 
@@ -47,15 +49,8 @@ MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
     options.maximumSweeps = static_cast<int>(ctx.args.Int("maximumSweeps"));
     if (ctx.args.Given("symmetryPlane"))
     {
-      const std::vector<double> v = ctx.args.Doubles("symmetryPlane");
-      if (v.size() != 6)
-        throw cli::ModuleError("symmetryPlane needs six numbers (point x,y,z, normal x,y,z), got " +
-                               std::to_string(v.size()));
+      options.symmetryPlane = PlaneFromSixNumbers(ctx.args.Doubles("symmetryPlane"), "--symmetryPlane");
       options.hasSymmetryPlane = true;
-      options.symmetryPlane.point = Eigen::Vector3d(v[0], v[1], v[2]);
-      options.symmetryPlane.normal = Eigen::Vector3d(v[3], v[4], v[5]);
-      if (!(options.symmetryPlane.normal.norm() > 0))
-        throw cli::ModuleError("symmetryPlane normal is zero");
     }
 
     ctx.progress.Start("Repairing mesh");
