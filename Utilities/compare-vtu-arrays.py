@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: BSD-3-Clause
+# Copyright (c) 2026 MMRep developers (see LICENSE)
 # Decodes every DataArray of two VTK XML .vtu files written by MMRep (appended raw, zlib, UInt64
 # headers) and reports which arrays differ, by section and name:
 #   python3 Utilities/compare-vtu-arrays.py a.vtu b.vtu

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# Copyright (c) 2026 MMRep developers (see LICENSE)
 # MMRep demo on the bundled real CT: bash Utilities/demo.sh <build-dir> <output-dir>
 # The README's main command: CT + five control points -> speaker FE face model with muscles, its
 # exports, report and pictures (FaceModelPipeline), then a smile simulated with CalculiX

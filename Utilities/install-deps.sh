@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# Copyright (c) 2026 MMRep developers (see LICENSE)
 # Installs MMRep's build and test dependencies from Debian 12 packages.
 # Idempotent: does nothing (no apt-get update either) when every package is already installed.
 set -euo pipefail
@@ -16,6 +18,7 @@ PACKAGES=(
   libxml2-utils            # xmllint: module descriptions against the Slicer schema
   calculix-ccx gmsh        # real FE tools that read our exports in the tests
   xvfb xauth libx11-dev     # off-screen X server for VTK pictures, X connection check
+  clang-format pmccabe      # tree hygiene tests: formatting, function lengths
 )
 
 missing=()

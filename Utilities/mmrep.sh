@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# Copyright (c) 2026 MMRep developers (see LICENSE)
 # MMRep driver: installs dependencies, builds into build/, then runs the demo or the tests.
 #   bash Utilities/mmrep.sh demo   # the main job on bundled data
 #   bash Utilities/mmrep.sh test   # the whole test suite (ctest)

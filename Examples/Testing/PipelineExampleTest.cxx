@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The Examples/ pipeline program and the FaceModelPipeline module, each run once on the bundled CT
 // and its control points with the shipped atlas: the two models are the same mesh (every node
 // within 1e-9 mm, the same elements, layers, sets, muscle tracks and cables, landmarks).
@@ -22,11 +24,12 @@ TEST(Examples, PipelineModelEqualsFaceModelPipeline)
   const std::string points = std::string(MMREP_SAMPLE_DATA) + "/cthead.ControlPoints.mrk.json";
   const std::string atlas = std::string(MMREP_SOURCE_DIR) + "/Resources/Atlas/FaceAtlas.vtu";
 
-  const auto module = mmrep::testing::RunModuleExecutable(
-    "FaceModelPipeline", {ct, points, "--atlas", atlas, "--outputDirectory", (work / "module").string(), "--noPictures"});
+  const auto module =
+    mmrep::testing::RunModuleExecutable("FaceModelPipeline", {ct, points, "--atlas", atlas, "--outputDirectory",
+                                                              (work / "module").string(), "--noPictures"});
   ASSERT_EQ(module.exitCode, 0) << module.err;
-  const auto example = mmrep::testing::RunModuleExecutable(
-    "FaceModelPipelineExample", {ct, points, atlas, (work / "example.vtu").string()});
+  const auto example = mmrep::testing::RunModuleExecutable("FaceModelPipelineExample",
+                                                           {ct, points, atlas, (work / "example.vtu").string()});
   ASSERT_EQ(example.exitCode, 0) << example.err;
   EXPECT_NE(example.out.find("MuscleInferenceFilter: 100%"), std::string::npos) << example.out;
   EXPECT_FALSE(fs::exists(work / "example.vtu.partial.vtu"));

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The atlas builder: the phases of mmrepFaceAtlas.h in order (each in its own file, see
 // mmrepFaceAtlasStages.h), with the construction log and the progress.
 #include "mmrepFaceAtlas.h"
@@ -72,7 +74,8 @@ FaceAtlas BuildFaceAtlas(vtkPolyData* skinWorld, vtkPolyData* skullWorld, const 
   atlas.plane = plane;
   double b[6];
   skinWorld->GetBounds(b);
-  atlas.frame = FaceFrame::FromPlane(plane, Eigen::Vector3d(0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5])));
+  atlas.frame =
+    FaceFrame::FromPlane(plane, Eigen::Vector3d(0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5])));
   const FaceFrame& frame = atlas.frame;
   double toLocal[16];
   frame.WorldToLocalMatrix(toLocal);
@@ -83,8 +86,8 @@ FaceAtlas BuildFaceAtlas(vtkPolyData* skinWorld, vtkPolyData* skullWorld, const 
   double headDepth = 0;
   atlas.centre = FaceCentreOfLocalSkin(skinLocal, &headDepth);
   const Eigen::Vector3d& c = atlas.centre;
-  atlas.log.push_back(FaceAtlasLogLine("face centre (local): anterior %.2f, superior %.2f mm; head depth at the nose %.1f mm",
-                                       c.y(), c.z(), headDepth));
+  atlas.log.push_back(FaceAtlasLogLine(
+    "face centre (local): anterior %.2f, superior %.2f mm; head depth at the nose %.1f mm", c.y(), c.z(), headDepth));
   atlas.landmarks = DetectFaceLandmarks(skin, bone, c);
   const FaceLandmarkSet& lm = atlas.landmarks;
   for (const auto& l : lm.log)
@@ -94,7 +97,8 @@ FaceAtlas BuildFaceAtlas(vtkPolyData* skinWorld, vtkPolyData* skullWorld, const 
   // 2-4. Grid of rays, skin nodes, through-thickness columns.
   FaceGrid& grid = atlas.grid;
   const FaceMouthRegion mouth = LayOutFaceGrid(skin, c, lm, options, grid);
-  atlas.log.push_back(FaceAtlasLogLine("grid: %.0f rows (phi) x %.0f columns (theta), left half", grid.Rows(), grid.Cols()));
+  atlas.log.push_back(
+    FaceAtlasLogLine("grid: %.0f rows (phi) x %.0f columns (theta), left half", grid.Rows(), grid.Cols()));
   auto outer = FaceSkinNodes(skin, c, grid);
   report(0.4);
   FaceColumns columns = FaceThroughThickness(std::move(outer), bone, grid, mouth, options, atlas.log);
@@ -108,9 +112,9 @@ FaceAtlas BuildFaceAtlas(vtkPolyData* skinWorld, vtkPolyData* skullWorld, const 
     quality::QualityOptions qo;
     qo.threads = 1;
     const auto s = quality::SummarizeScaledJacobian(mesh, options.qualityThreshold, qo);
-    atlas.log.push_back(FaceAtlasLogLine(
-      "before repair: scaled Jacobian min %.3f, mean %.3f; %.0f elements below the threshold", s.min, s.mean,
-      s.belowThreshold));
+    atlas.log.push_back(
+      FaceAtlasLogLine("before repair: scaled Jacobian min %.3f, mean %.3f; %.0f elements below the threshold", s.min,
+                       s.mean, s.belowThreshold));
   }
   report(0.7);
   AddFaceNodeSets(grid, columns, mouth, lm, mesh);

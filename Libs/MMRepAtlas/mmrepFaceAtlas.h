@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The generic face atlas: a symmetric three-layer hexahedral mesh of the facial soft tissue of a
 // reference head (skin and bone surfaces + symmetry plane), with node sets, landmarks and muscles.
 //
@@ -55,21 +57,21 @@ struct FaceAtlasOptions
   // is 3 mm or more almost everywhere (forensic depth tables); shallower "bone" crossings are metal
   // streaks or the nasal rim, and columns thinner than this invert under any registration.
   double minThickness = 3.0;
-  double outlierDepth = 3.0;   // mm: bone depths this far from the local median are ignored
-  double normalBlend = 0.5;    // weight of the smoothed skin normal in the through-thickness direction
+  double outlierDepth = 3.0; // mm: bone depths this far from the local median are ignored
+  double normalBlend = 0.5;  // weight of the smoothed skin normal in the through-thickness direction
   std::array<double, 3> layerRatios{0.15, 0.30, 0.55}; // epidermis, dermis, hypodermis
-  double qualityThreshold = 0.5; // minimum scaled Jacobian to reach
-  double muscleSpacing = 4.0;    // mm between muscle track points
+  double qualityThreshold = 0.5;                       // minimum scaled Jacobian to reach
+  double muscleSpacing = 4.0;                          // mm between muscle track points
 };
 
 struct FaceAtlas
 {
-  FEMesh mesh;     // world (LPS) coordinates
-  Plane plane;     // symmetry plane used
-  FaceFrame frame; // local frame
-  FaceGrid grid;   // left-half grid (local coordinates)
+  FEMesh mesh;                                      // world (LPS) coordinates
+  Plane plane;                                      // symmetry plane used
+  FaceFrame frame;                                  // local frame
+  FaceGrid grid;                                    // left-half grid (local coordinates)
   Eigen::Vector3d centre = Eigen::Vector3d::Zero(); // face centre (local)
-  FaceLandmarkSet landmarks; // local coordinates
+  FaceLandmarkSet landmarks;                        // local coordinates
   // Reference surfaces of the atlas (world): the reference head's left half and its mirror image,
   // cut to the atlas region (+15 mm). Skin nodes lie on `skinSurface`, skull nodes on `skullSurface`.
   vtkSmartPointer<vtkPolyData> skinSurface, skullSurface;

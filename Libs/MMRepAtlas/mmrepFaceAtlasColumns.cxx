@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Steps 3-4 of the atlas: the skin node of each grid ray, its inward through-thickness direction,
 // the bone depth along it (outliers rejected) and the harmonic fill of the thickness elsewhere.
 #include "mmrepFaceAtlasStages.h"
@@ -68,8 +70,8 @@ std::vector<Eigen::Vector3d> SkinNormals(const std::vector<Eigen::Vector3d>& out
 }
 
 // Depths far from the median of their neighbourhood, or below the minimum thickness, become NaN.
-std::vector<double> RejectOutliers(const std::vector<double>& depth, int rows, int cols, const FaceAtlasOptions& options,
-                                   int& outliers)
+std::vector<double> RejectOutliers(const std::vector<double>& depth, int rows, int cols,
+                                   const FaceAtlasOptions& options, int& outliers)
 {
   std::vector<double> accepted = depth;
   outliers = 0;

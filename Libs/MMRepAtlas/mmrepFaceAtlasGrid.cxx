@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Step 2 of the atlas: the (theta, phi) grid of rays over the left half of the face, graded from
 // the mesh size to the lips' size over the mouth.
 #include "mmrepFaceAtlasStages.h"
@@ -75,12 +77,13 @@ FaceMouthRegion LayOutFaceGrid(const SurfaceRays& skin, const Eigen::Vector3d& c
   mouth.mouthHi = lm.subnasale.phi;
   mouth.lateral = lm.lipCorner.theta + kMouthPastCorner / rho;
   grid.phi = Graded(phiBottom, phiTop, [&](double x) {
-    return Size(x * radius, mouth.mouthLo * radius, mouth.mouthHi * radius, options.gradingLength,
-                options.lipsMeshSize, options.meshSize) /
+    return Size(x * radius, mouth.mouthLo * radius, mouth.mouthHi * radius, options.gradingLength, options.lipsMeshSize,
+                options.meshSize) /
            radius;
   });
   grid.theta = Graded(0, thetaMax, [&](double x) {
-    return Size(x * rho, -1e9, mouth.lateral * rho, options.gradingLength, options.lipsMeshSize, options.meshSize) / rho;
+    return Size(x * rho, -1e9, mouth.lateral * rho, options.gradingLength, options.lipsMeshSize, options.meshSize) /
+           rho;
   });
   const auto& r = options.layerRatios;
   grid.levels = {0, r[0] / (r[0] + r[1] + r[2]), (r[0] + r[1]) / (r[0] + r[1] + r[2]), 1.0};

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Steps 5-6 and 8 of the atlas: the left half's nodes through the layers, the mirrored world mesh
 // of hexahedra, and its node sets.
 #include "mmrepFaceAtlasStages.h"
@@ -89,7 +91,8 @@ void AddFaceNodeSets(const FaceGrid& grid, const FaceColumns& columns, const Fac
         if (j == 0)
           for (int k = 0; k < 4; ++k)
             midSet.push_back(grid.Node(i, j, k, side));
-        if (mouth.Ellipse(grid, i, j, lipsLateral) <= 1.0 && grid.phi[i] <= mouth.mouthHi && grid.phi[i] >= mouth.mouthLo)
+        if (mouth.Ellipse(grid, i, j, lipsLateral) <= 1.0 && grid.phi[i] <= mouth.mouthHi &&
+            grid.phi[i] >= mouth.mouthLo)
           lipsSet.push_back(grid.Node(i, j, 0, side));
       }
   for (auto* set : {&skinSet, &skullSet, &innerSet, &midSet, &lipsSet})

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Step 7 of the atlas: the reference surfaces the atlas keeps its nodes on, the repair of its
 // elements with exact re-symmetrisation, and the surface nodes projected back onto the surfaces.
 #include "mmrepFaceAtlasStages.h"
@@ -140,9 +142,9 @@ void RepairFaceAtlas(const FaceAtlasOptions& options, FaceAtlas& atlas)
     ReadLeftHalf(mesh, atlas.frame, atlas.grid);
     WriteNodesFromLeftHalf(atlas.grid, atlas.frame, mesh);
     const auto q = Quality(mesh, options);
-    atlas.log.push_back(FaceAtlasLogLine(
-      "after repair and symmetrisation: scaled Jacobian min %.3f, mean %.3f; %.0f below the threshold", q.min, q.mean,
-      q.belowThreshold));
+    atlas.log.push_back(
+      FaceAtlasLogLine("after repair and symmetrisation: scaled Jacobian min %.3f, mean %.3f; %.0f below the threshold",
+                       q.min, q.mean, q.belowThreshold));
   }
 }
 
@@ -173,8 +175,8 @@ void ProjectFaceSurfaceNodes(const FaceAtlasOptions& options, std::vector<char>&
       }
   WriteNodesFromLeftHalf(grid, atlas.frame, mesh);
   const auto q = Quality(mesh, options);
-  atlas.log.push_back(FaceAtlasLogLine("surface nodes projected (largest move %.3f mm): scaled Jacobian min %.3f, mean %.3f",
-                                       worst, q.min, q.mean));
+  atlas.log.push_back(FaceAtlasLogLine(
+    "surface nodes projected (largest move %.3f mm): scaled Jacobian min %.3f, mean %.3f", worst, q.min, q.mean));
   // A mid-sagittal inner node is the closest bone point pushed back onto the plane: where the
   // bone meets the plane obliquely that leaves the bone. Such a node is not on the skull but
   // on the offset part of the inner surface (set `inner`), so `skull` means "on the bone".

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The phases of BuildFaceAtlas (mmrepFaceAtlas.h, steps 2-7), one concept per source file:
 // the grid of rays (mmrepFaceAtlasGrid.cxx), the through-thickness columns under the skin
 // (mmrepFaceAtlasColumns.cxx), the mirrored mesh and its node sets (mmrepFaceAtlasMesh.cxx), and
@@ -37,13 +39,14 @@ FaceMouthRegion LayOutFaceGrid(const SurfaceRays& skin, const Eigen::Vector3d& c
 // Steps 3-4, per grid cell q = i * cols + j (left half).
 struct FaceColumns
 {
-  std::vector<Eigen::Vector3d> outer;  // skin node (local)
-  std::vector<Eigen::Vector3d> dir;    // inward through-thickness direction
-  std::vector<double> thickness;       // mm, from the skin node to the inner node
-  std::vector<char> onBone;            // the inner node is a bone crossing (set `skull`)
+  std::vector<Eigen::Vector3d> outer; // skin node (local)
+  std::vector<Eigen::Vector3d> dir;   // inward through-thickness direction
+  std::vector<double> thickness;      // mm, from the skin node to the inner node
+  std::vector<char> onBone;           // the inner node is a bone crossing (set `skull`)
 };
 // Skin nodes: the outermost crossing of each grid ray with the skin.
-std::vector<Eigen::Vector3d> FaceSkinNodes(const SurfaceRays& skin, const Eigen::Vector3d& centre, const FaceGrid& grid);
+std::vector<Eigen::Vector3d> FaceSkinNodes(const SurfaceRays& skin, const Eigen::Vector3d& centre,
+                                           const FaceGrid& grid);
 // Directions, bone depths (outliers rejected) and the harmonic fill of the thickness; the log
 // gets the counts of followed, rejected and shallow bone crossings.
 FaceColumns FaceThroughThickness(std::vector<Eigen::Vector3d> outer, const SurfaceRays& bone, const FaceGrid& grid,

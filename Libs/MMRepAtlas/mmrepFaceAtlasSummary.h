@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // What BuildFaceAtlas reports about a finished atlas: its element quality measured independently
 // of the construction's own checks, and its counts.
 #pragma once

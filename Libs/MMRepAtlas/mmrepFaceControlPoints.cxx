@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepFaceControlPoints.h"
 
 #include "mmrepFaceAtlas.h"
@@ -18,7 +20,6 @@ vtkSmartPointer<vtkPolyData> ToLocal(vtkPolyData* world, const FaceFrame& frame)
 }
 
 constexpr double kDeg = M_PI / 180.0;
-
 
 // The atlas's landmark rules (mmrepFaceLandmarks.cxx) with the two changes that a flat, flexed
 // face in a volume cut below the chin needs (headsq):
@@ -54,7 +55,8 @@ FaceLandmarkSet DetectWithoutChin(const SurfaceRays& skin, const SurfaceRays& bo
   };
   // Signed distance of profile point i in front of the chord a-b (in the (v, w) plane).
   auto inFront = [&](int i, int a, int b) {
-    const Eigen::Vector2d pa(profile[a].local.y(), profile[a].local.z()), pb(profile[b].local.y(), profile[b].local.z());
+    const Eigen::Vector2d pa(profile[a].local.y(), profile[a].local.z()),
+      pb(profile[b].local.y(), profile[b].local.z());
     const Eigen::Vector2d t = (pb - pa).normalized(), p(profile[i].local.y(), profile[i].local.z());
     const Eigen::Vector2d d = p - pa - (p - pa).dot(t) * t;
     return d.x() >= 0 ? d.norm() : -d.norm();
@@ -157,7 +159,8 @@ FaceControlPoints DetectFaceControlPoints(vtkPolyData* skin, vtkPolyData* skull,
   // Same frame origin as the atlas builder (the skin's bounding-box centre, projected on the plane).
   double b[6];
   skin->GetBounds(b);
-  out.frame = FaceFrame::FromPlane(plane, Eigen::Vector3d(0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5])));
+  out.frame =
+    FaceFrame::FromPlane(plane, Eigen::Vector3d(0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5])));
   auto skinLocal = ToLocal(skin, out.frame);
   auto skullLocal = ToLocal(skull, out.frame);
   out.centre = FaceCentreOfLocalSkin(skinLocal);
@@ -177,9 +180,12 @@ FaceControlPoints DetectFaceControlPoints(vtkPolyData* skin, vtkPolyData* skull,
   for (const auto& l : out.landmarks.log)
     out.log.push_back(l);
   const FaceLandmarkSet& all = out.landmarks;
-  for (const auto& [name, p] : std::vector<std::pair<std::string, FacePoint>>{
-         {"pronasale", all.pronasale}, {"subnasale", all.subnasale}, {"upper lip", all.upperLip},
-         {"stomion", all.stomion}, {"lower lip", all.lowerLip}, {"nasion", all.nasion}})
+  for (const auto& [name, p] : std::vector<std::pair<std::string, FacePoint>>{{"pronasale", all.pronasale},
+                                                                              {"subnasale", all.subnasale},
+                                                                              {"upper lip", all.upperLip},
+                                                                              {"stomion", all.stomion},
+                                                                              {"lower lip", all.lowerLip},
+                                                                              {"nasion", all.nasion}})
   {
     std::ostringstream line;
     line.precision(4);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The atlas's five control points (FaceAtlasLandmarkNames) on any head, by the same automatic
 // rules the atlas builder uses on its reference head (mmrepFaceLandmarks.h): face frame on the
 // symmetry plane, face centre on the plane halfway through the head at the nose tip's level and
@@ -23,7 +25,7 @@ struct FaceControlPoints
   FaceFrame frame;
   Eigen::Vector3d centre = Eigen::Vector3d::Zero(); // face centre (local)
   FaceLandmarkSet landmarks;                        // all detected landmarks (local)
-  bool usedFallback = false; // the atlas rules failed; see DetectFaceControlPoints
+  bool usedFallback = false;                        // the atlas rules failed; see DetectFaceControlPoints
   std::vector<std::string> log;
 };
 

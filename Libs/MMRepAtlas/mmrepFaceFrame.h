@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The face frame of the atlas: an orthonormal frame attached to the symmetry plane, and the
 // spherical (theta, phi) ray parameterisation of the face around a centre behind it.
 //
@@ -22,7 +24,7 @@ namespace mmrep
 
 struct FaceFrame
 {
-  Eigen::Vector3d origin = Eigen::Vector3d::Zero(); // on the plane
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();   // on the plane
   Eigen::Matrix3d axes = Eigen::Matrix3d::Identity(); // columns: left (plane normal), anterior, superior (LPS)
 
   // From the symmetry plane: left = plane normal, anterior = left x (0,0,1) normalised (LPS -y for

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The structured hexahedral grid of the face atlas: rows i along phi (bottom to top), columns j
 // along theta (j = 0 on the symmetry plane, the left half only), levels k through the thickness
 // (0 skin, 1 epidermis/dermis, 2 dermis/hypodermis, 3 inner surface). The right half is the
@@ -24,10 +26,10 @@ namespace mmrep
 
 struct FaceGrid
 {
-  std::vector<double> theta;        // column angles, theta[0] = 0 (radians)
-  std::vector<double> phi;          // row angles, increasing (radians)
+  std::vector<double> theta;                        // column angles, theta[0] = 0 (radians)
+  std::vector<double> phi;                          // row angles, increasing (radians)
   std::array<double, 4> levels{0, 0.15, 0.45, 1.0}; // fraction of the thickness of each level
-  std::vector<Eigen::Vector3d> local; // left-half node positions (local frame), LeftNode order
+  std::vector<Eigen::Vector3d> local;               // left-half node positions (local frame), LeftNode order
 
   int Rows() const { return static_cast<int>(phi.size()); }
   int Cols() const { return static_cast<int>(theta.size()); }
@@ -102,8 +104,8 @@ struct FaceGrid
   {
     Embedding e;
     e.element = Element(l.i, l.j, l.layer, side);
-    e.pcoords = side == 0 ? std::array<double, 3>{l.fPhi, l.fTheta, l.fDepth}
-                          : std::array<double, 3>{l.fTheta, l.fPhi, l.fDepth};
+    e.pcoords =
+      side == 0 ? std::array<double, 3>{l.fPhi, l.fTheta, l.fDepth} : std::array<double, 3>{l.fTheta, l.fPhi, l.fDepth};
     return e;
   }
   // Left-half local position of a location: trilinear map of the left hexahedron (VTK shape functions).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepFaceLandmarks.h"
 
 #include <algorithm>
@@ -18,8 +20,8 @@ std::string Describe(const std::string& name, const FacePoint& p)
 {
   std::ostringstream s;
   s.precision(4);
-  s << name << ": theta " << p.theta / kDeg << " deg, phi " << p.phi / kDeg << " deg, local (" << p.local.x()
-    << ", " << p.local.y() << ", " << p.local.z() << ")";
+  s << name << ": theta " << p.theta / kDeg << " deg, phi " << p.phi / kDeg << " deg, local (" << p.local.x() << ", "
+    << p.local.y() << ", " << p.local.z() << ")";
   return s.str();
 }
 
@@ -165,7 +167,8 @@ void DetectMouthCorner(const SurfaceRays& skin, const Eigen::Vector3d& centre, F
   }
   lm.log.push_back("lip-line relief (lateral mm: groove depth mm):" + relief.str());
   if (cornerTheta < 0)
-    throw std::runtime_error("face landmarks: cannot find the left mouth corner (the lip line does not end within 35 mm)");
+    throw std::runtime_error(
+      "face landmarks: cannot find the left mouth corner (the lip line does not end within 35 mm)");
   lm.lipCorner = SkinHit(skin, centre, cornerTheta, linePhi);
 }
 
@@ -228,7 +231,8 @@ FaceLandmarkSet DetectFaceLandmarks(const SurfaceRays& skin, const SurfaceRays& 
   const double delta = 0.5;
   auto need = [&](int i, const char* what) {
     if (i < 0)
-      throw std::runtime_error(std::string("face atlas: cannot find the ") + what + " on the mid-sagittal skin profile");
+      throw std::runtime_error(std::string("face atlas: cannot find the ") + what +
+                               " on the mid-sagittal skin profile");
     return i;
   };
   // Lips and chin: extrema of the anterior coordinate walking down (smoothed over 1.25 deg).
@@ -245,7 +249,7 @@ FaceLandmarkSet DetectFaceLandmarks(const SurfaceRays& skin, const SurfaceRays& 
   const int ls = need(NextExtremum(vs, sn, -1, false, delta), "upper lip");
   const int st = need(NextExtremum(vs, ls, -1, true, delta), "stomion");
   const int li = need(NextExtremum(vs, st, -1, false, delta), "lower lip");
-    // Concavities and convexities that depend on the head's pitch are measured from chords:
+  // Concavities and convexities that depend on the head's pitch are measured from chords:
   // pogonion = farthest point in front of the chord from the labiomental fold to the profile
   // point 25 mm lower; nasion = farthest point behind the chord from the nose tip to the
   // profile point 50 mm higher.
@@ -291,13 +295,17 @@ FaceLandmarkSet DetectFaceLandmarks(const SurfaceRays& skin, const SurfaceRays& 
 
   DetectOrbitAndMouthCorner(skin, bone, centre, lm);
 
-  for (const auto& [name, p] :
-       std::vector<std::pair<std::string, FacePoint>>{{"pronasale", lm.pronasale}, {"subnasale", lm.subnasale},
-                                                      {"upper lip", lm.upperLip}, {"stomion", lm.stomion},
-                                                      {"lower lip", lm.lowerLip}, {"labiomental fold", lm.labiomental},
-                                                      {"pogonion", lm.pogonion}, {"nasion", lm.nasion},
-                                                      {"eye inner corner", lm.eyeInner}, {"eye outer corner", lm.eyeOuter},
-                                                      {"lip corner", lm.lipCorner}})
+  for (const auto& [name, p] : std::vector<std::pair<std::string, FacePoint>>{{"pronasale", lm.pronasale},
+                                                                              {"subnasale", lm.subnasale},
+                                                                              {"upper lip", lm.upperLip},
+                                                                              {"stomion", lm.stomion},
+                                                                              {"lower lip", lm.lowerLip},
+                                                                              {"labiomental fold", lm.labiomental},
+                                                                              {"pogonion", lm.pogonion},
+                                                                              {"nasion", lm.nasion},
+                                                                              {"eye inner corner", lm.eyeInner},
+                                                                              {"eye outer corner", lm.eyeOuter},
+                                                                              {"lip corner", lm.lipCorner}})
     lm.log.push_back(Describe(name, p));
   return lm;
 }

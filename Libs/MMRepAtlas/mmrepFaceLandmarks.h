@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Automatic facial landmarks of a head from its skin and bone surfaces (local face frame, see
 // mmrepFaceFrame.h), found on ray maps cast from the face centre:
 //   * mid-sagittal profile (theta = 0, phi every 0.25 deg): pronasale = most anterior point; walking
@@ -29,7 +31,7 @@ namespace mmrep
 
 struct FacePoint
 {
-  double theta = 0, phi = 0; // ray angles (radians)
+  double theta = 0, phi = 0;                       // ray angles (radians)
   Eigen::Vector3d local = Eigen::Vector3d::Zero(); // skin hit, local frame
 };
 

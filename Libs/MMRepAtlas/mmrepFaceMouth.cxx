@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The atlas's mouth slit and jaw (rules in mmrepFaceMouth.h).
 #include "mmrepFaceMouth.h"
 
@@ -40,7 +42,8 @@ MouthSlitCells MouthSlitCellsOf(const FaceGrid& grid, const FaceLandmarkSet& lan
   c.lowRow = Nearest(grid.phi, landmarks.labiomental.phi);
   c.highRow = Nearest(grid.phi, landmarks.subnasale.phi);
   if (!(c.lowRow < c.slitRow && c.slitRow < c.highRow && c.cornerColumn >= 1 && c.cornerColumn + 1 < grid.Cols()))
-    throw std::runtime_error("face atlas: the mouth (labiomental fold, stomion, subnasale, corner) does not span the grid");
+    throw std::runtime_error(
+      "face atlas: the mouth (labiomental fold, stomion, subnasale, corner) does not span the grid");
   return c;
 }
 
@@ -150,10 +153,11 @@ std::string AddJaw(FEMesh& mesh, vtkPolyData* skullLocal, const FaceFrame& frame
       (d < 0 ? mandible : maxilla).push_back(n);
   }
   char line[256];
-  std::snprintf(line, sizeof line,
-                "jaw: left condyle (local) %.1f, %.1f, %.1f mm (%.1f mm from the estimate); %zu mandible, %zu maxilla nodes, "
-                "%zu bone nodes over the teeth attached to neither",
-                condyle.x(), condyle.y(), condyle.z(), std::sqrt(d2), mandible.size(), maxilla.size(), free);
+  std::snprintf(
+    line, sizeof line,
+    "jaw: left condyle (local) %.1f, %.1f, %.1f mm (%.1f mm from the estimate); %zu mandible, %zu maxilla nodes, "
+    "%zu bone nodes over the teeth attached to neither",
+    condyle.x(), condyle.y(), condyle.z(), std::sqrt(d2), mandible.size(), maxilla.size(), free);
   return line;
 }
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The atlas's mouth and jaw (rules in Resources/Atlas/README.md):
 //  * mouth slit: the grid row nearest the stomion, from the plane to the column nearest the mouth
 //    corner, through the whole thickness (skin to the inner surface facing the oral vestibule).

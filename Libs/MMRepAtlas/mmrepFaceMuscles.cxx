@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepFaceMuscles.h"
 
 #include <algorithm>
@@ -93,7 +95,8 @@ std::vector<MuscleRule> FaceMuscleRules(const FaceLandmarkSet& lm, const Eigen::
     rules.push_back({"DepressorAnguliOris", {origin, at(corner, 6, -2, 0.6)}, false});
   }
   rules.push_back({"DepressorLabiiInferioris",
-                   {fractionOfCorner(lm.pogonion, 0.6, -4, 0.95), fractionOfCorner(lm.lowerLip, 0.35, -2, 0.6)}, false});
+                   {fractionOfCorner(lm.pogonion, 0.6, -4, 0.95), fractionOfCorner(lm.lowerLip, 0.35, -2, 0.6)},
+                   false});
   rules.push_back({"Mentalis", {at(lm.labiomental, 5, -3, 0.95), at(lm.pogonion, 7, -4, 0.35)}, false});
   rules.push_back({"Buccinator", {at(corner, 35, 0, 0.95), at(corner, 8, 0, 0.7)}, false});
   for (auto& rule : rules)
@@ -133,7 +136,8 @@ void AddFaceMuscles(FEMesh& mesh, const FaceGrid& grid, const FaceFrame& frame, 
       std::size_t k = std::upper_bound(arc.begin(), arc.end(), target) - arc.begin();
       k = std::clamp<std::size_t>(k, 1, arc.size() - 1);
       const double f = arc[k] > arc[k - 1] ? (target - arc[k - 1]) / (arc[k] - arc[k - 1]) : 0;
-      track.push_back(Between(dense[k - 1], dense[k], f, dense[k - 1].depth + f * (dense[k].depth - dense[k - 1].depth)));
+      track.push_back(
+        Between(dense[k - 1], dense[k], f, dense[k - 1].depth + f * (dense[k].depth - dense[k - 1].depth)));
     }
     if (rule.startsOnMidline)
       track.front().theta = 0;
@@ -160,8 +164,8 @@ void AddFaceMuscles(FEMesh& mesh, const FaceGrid& grid, const FaceFrame& frame, 
           if (side == 1)
             local.x() = -local.x();
           const Eigen::Vector3d world = frame.ToWorld(local);
-          const auto [at, added] =
-            muscleNodeAt.emplace(std::array<double, 3>{world.x(), world.y(), world.z()}, static_cast<std::int32_t>(mesh.nodes.size()));
+          const auto [at, added] = muscleNodeAt.emplace(std::array<double, 3>{world.x(), world.y(), world.z()},
+                                                        static_cast<std::int32_t>(mesh.nodes.size()));
           node = at->second;
           if (added)
             mesh.nodes.push_back(world);

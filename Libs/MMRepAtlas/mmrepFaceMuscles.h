@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Facial muscle tracks of the atlas, one rule per muscle (left side; the right side is the mirror).
 //
 // A rule gives a few control points in the atlas's face parameterisation: ray angles (theta, phi)
@@ -56,9 +58,9 @@ struct MuscleControlPoint
 
 struct MuscleRule
 {
-  std::string name;                       // without side suffix
-  std::vector<MuscleControlPoint> points; // first = insertion (bone or meeting point)
-  bool startsOnMidline = false;           // first point on the plane: shared by _L and _R
+  std::string name;                                        // without side suffix
+  std::vector<MuscleControlPoint> points;                  // first = insertion (bone or meeting point)
+  bool startsOnMidline = false;                            // first point on the plane: shared by _L and _R
   double maximumForce = MuscleTrack::kDefaultMaximumForce; // N, per track
 };
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // ITK <-> VTK <-> OpenMesh conversions (all template instantiations live in this file).
 #include "mmrepBridge.h"
 
@@ -21,8 +23,7 @@
 namespace mmrep
 {
 
-template <typename TPixel>
-vtkSmartPointer<vtkImageData> ITKToVTKImage(const itk::Image<TPixel, 3>* image)
+template <typename TPixel> vtkSmartPointer<vtkImageData> ITKToVTKImage(const itk::Image<TPixel, 3>* image)
 {
   if (image == nullptr)
   {
@@ -60,8 +61,7 @@ vtkSmartPointer<vtkImageData> ITKToVTKImage(const itk::Image<TPixel, 3>* image)
   return out;
 }
 
-template <typename TPixel>
-typename itk::Image<TPixel, 3>::Pointer VTKToITKImage(vtkImageData* image)
+template <typename TPixel> typename itk::Image<TPixel, 3>::Pointer VTKToITKImage(vtkImageData* image)
 {
   if (image == nullptr)
   {
@@ -173,8 +173,7 @@ vtkSmartPointer<vtkPolyData> ITKMeshToPolyData(const SurfaceMesh* mesh)
       const SurfaceMesh::CellType* cell = it->Value();
       if (cell->GetType() != itk::CellGeometryEnum::TRIANGLE_CELL)
       {
-        throw std::invalid_argument("ITKMeshToPolyData: cell " + std::to_string(it->Index()) +
-                                    " is not a triangle");
+        throw std::invalid_argument("ITKMeshToPolyData: cell " + std::to_string(it->Index()) + " is not a triangle");
       }
       vtkIdType ids[3];
       int k = 0;

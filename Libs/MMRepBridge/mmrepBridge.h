@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Conversions between the toolkits: ITK images <-> vtkImageData (origin, spacing and direction
 // kept), ITK triangle meshes <-> vtkPolyData, and vtkPolyData <-> OpenMesh triangle meshes.
 // Every conversion copies the data; point and face order are preserved.
@@ -19,12 +21,10 @@ namespace mmrep
 
 // ---- images ----
 // Instantiated for short, unsigned char and float pixels.
-template <typename TPixel>
-vtkSmartPointer<vtkImageData> ITKToVTKImage(const itk::Image<TPixel, 3>* image);
+template <typename TPixel> vtkSmartPointer<vtkImageData> ITKToVTKImage(const itk::Image<TPixel, 3>* image);
 // Any single-component VTK scalar type is converted (static_cast) to TPixel.
 // Throws std::invalid_argument for null/multi-component input or a singular direction.
-template <typename TPixel>
-typename itk::Image<TPixel, 3>::Pointer VTKToITKImage(vtkImageData* image);
+template <typename TPixel> typename itk::Image<TPixel, 3>::Pointer VTKToITKImage(vtkImageData* image);
 
 extern template vtkSmartPointer<vtkImageData> ITKToVTKImage<short>(const itk::Image<short, 3>*);
 extern template vtkSmartPointer<vtkImageData> ITKToVTKImage<unsigned char>(const itk::Image<unsigned char, 3>*);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Typed, validated access to the values given on the command line (or the <default>s).
 #include "mmrepCLIInternal.h"
 
@@ -13,7 +15,8 @@ namespace detail
 std::string Trim(std::string_view text)
 {
   const auto b = text.find_first_not_of(" \t\r\n");
-  if (b == std::string_view::npos) return {};
+  if (b == std::string_view::npos)
+    return {};
   const auto e = text.find_last_not_of(" \t\r\n");
   return std::string(text.substr(b, e - b + 1));
 }
@@ -27,37 +30,48 @@ std::string Lower(std::string text)
 std::vector<std::string> SplitComma(const std::string& text)
 {
   std::vector<std::string> items;
-  if (Trim(text).empty()) return items;
+  if (Trim(text).empty())
+    return items;
   std::string::size_type start = 0;
   for (;;)
   {
     const auto comma = text.find(',', start);
     items.push_back(Trim(std::string_view(text).substr(start, comma - start)));
-    if (comma == std::string::npos) return items;
+    if (comma == std::string::npos)
+      return items;
     start = comma + 1;
   }
 }
 
 // from_chars rejects a leading '+', which command lines commonly contain.
-template <typename T>
-bool ParseNumber(const std::string& text, T& value)
+template <typename T> bool ParseNumber(const std::string& text, T& value)
 {
   std::string_view s = text;
-  if (s.size() > 1 && s[0] == '+' && s[1] != '-') s.remove_prefix(1);
-  if (s.empty()) return false;
+  if (s.size() > 1 && s[0] == '+' && s[1] != '-')
+    s.remove_prefix(1);
+  if (s.empty())
+    return false;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
   return ec == std::errc() && end == s.data() + s.size();
 }
 
-bool ParseInt(const std::string& text, long long& value) { return ParseNumber(text, value); }
+bool ParseInt(const std::string& text, long long& value)
+{
+  return ParseNumber(text, value);
+}
 
-bool ParseDouble(const std::string& text, double& value) { return ParseNumber(text, value) && std::isfinite(value); }
+bool ParseDouble(const std::string& text, double& value)
+{
+  return ParseNumber(text, value) && std::isfinite(value);
+}
 
 bool ParseBool(const std::string& text, bool& value)
 {
   const std::string t = Lower(Trim(text));
-  if (t == "true" || t == "1" || t == "yes" || t == "on") return value = true, true;
-  if (t == "false" || t == "0" || t == "no" || t == "off") return value = false, true;
+  if (t == "true" || t == "1" || t == "yes" || t == "on")
+    return value = true, true;
+  if (t == "false" || t == "0" || t == "no" || t == "off")
+    return value = false, true;
   return false;
 }
 
@@ -82,14 +96,20 @@ std::string Describe(const Parameter& p)
 
 namespace
 {
-bool StartsWith(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+bool StartsWith(const std::string& s, const char* prefix)
+{
+  return s.rfind(prefix, 0) == 0;
+}
 
 // Number of comma-separated components a value of this type has; 0 = any count, -1 = not split.
 int Components(const std::string& tag)
 {
-  if (tag == "point") return 3;
-  if (tag == "region") return 6;
-  if (tag.size() > 7 && tag.compare(tag.size() - 7, 7, "-vector") == 0) return 0;
+  if (tag == "point")
+    return 3;
+  if (tag == "region")
+    return 6;
+  if (tag.size() > 7 && tag.compare(tag.size() - 7, 7, "-vector") == 0)
+    return 0;
   return -1;
 }
 
@@ -100,7 +120,8 @@ void CheckNumber(const Parameter& p, const std::string& item, bool integer)
   if (integer)
   {
     long long i = 0;
-    if (!ParseInt(item, i)) throw ModuleError(what + "an integer");
+    if (!ParseInt(item, i))
+      throw ModuleError(what + "an integer");
     v = static_cast<double>(i);
   }
   else if (!ParseDouble(item, v))
@@ -117,17 +138,19 @@ bool InEnumeration(const Parameter& p, const std::string& value)
   double v = 0, e = 0;
   const bool numeric = !StartsWith(p.tag, "string") && ParseDouble(value, v);
   for (const std::string& element : p.elements)
-    if (element == value || (numeric && ParseDouble(element, e) && e == v)) return true;
+    if (element == value || (numeric && ParseDouble(element, e) && e == v))
+      return true;
   return false;
 }
 } // namespace
 
 void Validate(const Parameter& p, const std::vector<std::string>& values)
 {
-  if (values.size() > 1 && !p.multiple) throw ModuleError("parameter " + Describe(p) + " given more than once");
+  if (values.size() > 1 && !p.multiple)
+    throw ModuleError("parameter " + Describe(p) + " given more than once");
   const bool integer = StartsWith(p.tag, "integer");
   const bool number =
-      integer || StartsWith(p.tag, "float") || StartsWith(p.tag, "double") || p.tag == "point" || p.tag == "region";
+    integer || StartsWith(p.tag, "float") || StartsWith(p.tag, "double") || p.tag == "point" || p.tag == "region";
   for (const std::string& value : values)
   {
     if (p.tag.size() > 12 && p.tag.compare(p.tag.size() - 12, 12, "-enumeration") == 0)
@@ -139,7 +162,8 @@ void Validate(const Parameter& p, const std::vector<std::string>& values)
           allowed += (allowed.empty() ? "" : ", ") + e;
         throw ModuleError("parameter " + Describe(p) + ": '" + value + "' is not one of " + allowed);
       }
-      if (number) CheckNumber(p, value, integer);
+      if (number)
+        CheckNumber(p, value, integer);
       continue;
     }
     if (p.tag == "boolean")
@@ -171,7 +195,8 @@ Arguments::Arguments(const ModuleDescription& description, std::map<std::string,
 const Parameter& Arguments::Declared(const std::string& name) const
 {
   const Parameter* p = description_ ? description_->Find(name) : nullptr;
-  if (!p) throw ModuleError("parameter '" + name + "' is not declared in the module description");
+  if (!p)
+    throw ModuleError("parameter '" + name + "' is not declared in the module description");
   return *p;
 }
 
@@ -182,7 +207,10 @@ bool Arguments::Given(const std::string& name) const
   return it != values_.end() && !it->second.empty();
 }
 
-bool Arguments::Has(const std::string& name) const { return Given(name) || !Declared(name).defaultValue.empty(); }
+bool Arguments::Has(const std::string& name) const
+{
+  return Given(name) || !Declared(name).defaultValue.empty();
+}
 
 namespace
 {
@@ -190,13 +218,18 @@ namespace
 std::vector<std::string> Raw(const Parameter& p, const std::map<std::string, std::vector<std::string>>& values)
 {
   const auto it = values.find(p.name);
-  if (it != values.end() && !it->second.empty()) return it->second;
-  if (!p.defaultValue.empty()) return {p.defaultValue};
+  if (it != values.end() && !it->second.empty())
+    return it->second;
+  if (!p.defaultValue.empty())
+    return {p.defaultValue};
   throw ModuleError("parameter " + detail::Describe(p) + " is required but was not given");
 }
 } // namespace
 
-std::string Arguments::String(const std::string& name) const { return Raw(Declared(name), values_).front(); }
+std::string Arguments::String(const std::string& name) const
+{
+  return Raw(Declared(name), values_).front();
+}
 
 long long Arguments::Int(const std::string& name) const
 {
@@ -221,7 +254,8 @@ double Arguments::Double(const std::string& name) const
 bool Arguments::Bool(const std::string& name) const
 {
   const Parameter& p = Declared(name);
-  if (!Has(name)) return false; // an unset switch
+  if (!Has(name))
+    return false; // an unset switch
   bool v = false;
   const std::string text = Raw(p, values_).front();
   if (!detail::ParseBool(text, v))
@@ -232,7 +266,8 @@ bool Arguments::Bool(const std::string& name) const
 std::vector<std::string> Arguments::Strings(const std::string& name) const
 {
   const Parameter& p = Declared(name);
-  if (!Has(name)) return {};
+  if (!Has(name))
+    return {};
   std::vector<std::string> result;
   for (const std::string& value : Raw(p, values_))
   {
@@ -248,7 +283,8 @@ std::vector<std::string> Arguments::Strings(const std::string& name) const
 std::vector<double> Arguments::Doubles(const std::string& name) const
 {
   const Parameter& p = Declared(name);
-  if (!Has(name)) return {};
+  if (!Has(name))
+    return {};
   std::vector<double> result;
   for (const std::string& value : Raw(p, values_))
     for (const std::string& item : detail::SplitComma(value))
@@ -264,7 +300,8 @@ std::vector<double> Arguments::Doubles(const std::string& name) const
 std::vector<long long> Arguments::Ints(const std::string& name) const
 {
   const Parameter& p = Declared(name);
-  if (!Has(name)) return {};
+  if (!Has(name))
+    return {};
   std::vector<long long> result;
   for (const std::string& value : Raw(p, values_))
     for (const std::string& item : detail::SplitComma(value))
@@ -280,12 +317,14 @@ std::vector<long long> Arguments::Ints(const std::string& name) const
 std::vector<std::array<double, 3>> Arguments::PointsLPS(const std::string& name) const
 {
   const Parameter& p = Declared(name);
-  if (p.tag != "point") throw ModuleError("parameter " + detail::Describe(p) + " is a <" + p.tag + ">, not a <point>");
+  if (p.tag != "point")
+    throw ModuleError("parameter " + detail::Describe(p) + " is a <" + p.tag + ">, not a <point>");
   if (p.coordinateSystem != "ras" && p.coordinateSystem != "lps")
     throw ModuleError("parameter " + detail::Describe(p) + ": coordinateSystem '" + p.coordinateSystem +
                       "' is not supported (use ras or lps)");
   std::vector<std::array<double, 3>> points;
-  if (!Has(name)) return points;
+  if (!Has(name))
+    return points;
   // Slicer's RAS and the toolkit's LPS differ by the sign of the first two axes.
   const double sign = p.coordinateSystem == "ras" ? -1.0 : 1.0;
   for (const std::string& value : Raw(p, values_))

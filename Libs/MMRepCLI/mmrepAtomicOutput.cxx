@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // All-or-nothing output files: write a temporary sibling, rename it over the final path on success.
 #include "mmrepCLIInternal.h"
 
@@ -21,14 +23,17 @@ std::string FileExtension(const std::string& path)
   for (const char* twoPart : {".nii.gz", ".mrk.json", ".seg.nrrd"})
   {
     const std::string ext = twoPart;
-    if (name.size() > ext.size() && name.compare(name.size() - ext.size(), ext.size(), ext) == 0) return ext;
+    if (name.size() > ext.size() && name.compare(name.size() - ext.size(), ext.size(), ext) == 0)
+      return ext;
   }
   const auto dot = name.rfind('.');
-  if (dot == std::string::npos || dot == 0) return {};
+  if (dot == std::string::npos || dot == 0)
+    return {};
   if (name.compare(dot, std::string::npos, ".gz") == 0) // .vtk.gz, .nrrd.gz, ...
   {
     const auto previous = name.rfind('.', dot - 1);
-    if (previous != std::string::npos && previous > 0) return name.substr(previous);
+    if (previous != std::string::npos && previous > 0)
+      return name.substr(previous);
   }
   return name.substr(dot);
 }
@@ -39,12 +44,16 @@ void RemoveStaleOutputs(const std::string& folder, const std::string& prefix)
   for (fs::directory_iterator it(folder.empty() ? "." : folder, ec), end; !ec && it != end; it.increment(ec))
   {
     const std::string name = it->path().filename().string();
-    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    if (name.compare(0, prefix.size(), prefix) != 0)
+      continue;
     std::size_t digits = prefix.size();
-    while (digits < name.size() && name[digits] >= '0' && name[digits] <= '9') ++digits;
-    if (digits == prefix.size() || (digits < name.size() && name[digits] != '-' && name[digits] != '.')) continue;
+    while (digits < name.size() && name[digits] >= '0' && name[digits] <= '9')
+      ++digits;
+    if (digits == prefix.size() || (digits < name.size() && name[digits] != '-' && name[digits] != '.'))
+      continue;
     const long pid = std::stol(name.substr(prefix.size(), digits - prefix.size()));
-    if (pid <= 0 || pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
+    if (pid <= 0 || pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH)
+      continue;
     std::error_code removeError;
     fs::remove_all(it->path(), removeError); // best effort
   }
@@ -52,7 +61,8 @@ void RemoveStaleOutputs(const std::string& folder, const std::string& prefix)
 
 AtomicOutput::AtomicOutput(std::string finalPath) : final_(std::move(finalPath))
 {
-  if (final_.empty()) throw ModuleError("output file name is empty");
+  if (final_.empty())
+    throw ModuleError("output file name is empty");
   const fs::path target(final_);
   const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::error_code ec;
@@ -60,7 +70,8 @@ AtomicOutput::AtomicOutput(std::string finalPath) : final_(std::move(finalPath))
     throw ModuleError("cannot write '" + final_ + "': folder '" + folder.string() + "' does not exist");
   if (::access(folder.c_str(), W_OK) != 0)
     throw ModuleError("cannot write '" + final_ + "': folder '" + folder.string() + "' is not writable");
-  if (fs::is_directory(target, ec)) throw ModuleError("cannot write '" + final_ + "': it is a folder");
+  if (fs::is_directory(target, ec))
+    throw ModuleError("cannot write '" + final_ + "': it is a folder");
   CheckOutputPath(final_, false);
 
   // Same folder (so the rename is atomic), same extension (so writers pick the same format).
@@ -71,7 +82,7 @@ AtomicOutput::AtomicOutput(std::string finalPath) : final_(std::move(finalPath))
   RemoveStaleOutputs(folder.string(), stem + ".mmrep-tmp-");
   temp_ = (folder / (stem + ".mmrep-tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) +
                      name.substr(name.size() - ext.size())))
-              .string();
+            .string();
 }
 
 AtomicOutput::~AtomicOutput()
@@ -83,35 +94,45 @@ AtomicOutput::~AtomicOutput()
   }
 }
 
-void AtomicOutput::Commit() { Commit(false); }
+void AtomicOutput::Commit()
+{
+  Commit(false);
+}
 
-void AtomicOutput::CommitEvenIfRunFails() { Commit(true); }
+void AtomicOutput::CommitEvenIfRunFails()
+{
+  Commit(true);
+}
 
 void AtomicOutput::Commit(bool evenIfRunFails)
 {
-  if (committed_) return;
+  if (committed_)
+    return;
   std::error_code ec;
-  if (!fs::exists(temp_, ec)) throw ModuleError("cannot write '" + final_ + "': nothing was written");
+  if (!fs::exists(temp_, ec))
+    throw ModuleError("cannot write '" + final_ + "': nothing was written");
   // Inside a module run the rename waits until every step succeeded (mmrepOutputSafety.cxx).
   const std::string temp = temp_, final = final_;
   if (DeferPublication(
-          final_,
-          [temp, final] {
-            std::error_code e;
-            fs::rename(temp, final, e);
-            if (e) throw ModuleError("cannot write '" + final + "': " + e.message());
-          },
-          [temp] {
-            std::error_code e;
-            fs::remove(temp, e);
-          },
-          evenIfRunFails))
+        final_,
+        [temp, final] {
+          std::error_code e;
+          fs::rename(temp, final, e);
+          if (e)
+            throw ModuleError("cannot write '" + final + "': " + e.message());
+        },
+        [temp] {
+          std::error_code e;
+          fs::remove(temp, e);
+        },
+        evenIfRunFails))
   {
     committed_ = true;
     return;
   }
   fs::rename(temp_, final_, ec);
-  if (ec) throw ModuleError("cannot write '" + final_ + "': " + ec.message());
+  if (ec)
+    throw ModuleError("cannot write '" + final_ + "': " + ec.message());
   committed_ = true;
   detail::OutputCommitted();
 }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // MMRep command-line framework: runs a Slicer Execution Model CLI module from its XML description.
 //
 // The module's .xml (compiled in by mmrep_add_cli_module) is the single source of truth: flags,
@@ -58,6 +60,24 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+// Runs f and returns its result, turning a library's std::exception into a one-line ModuleError
+// (its message after `prefix`); ModuleErrors pass through.
+template <typename F> auto AsModuleError(F&& f, const std::string& prefix = "")
+{
+  try
+  {
+    return f();
+  }
+  catch (const ModuleError&)
+  {
+    throw;
+  }
+  catch (const std::exception& e)
+  {
+    throw ModuleError(prefix + e.what());
+  }
+}
+
 // Thrown by Progress when the run is to stop (Slicer's Abort, SIGINT, SIGTERM). Deliberately not a
 // std::exception, so the library code's `catch (const std::exception&)` never swallows it.
 struct Aborted
@@ -72,15 +92,15 @@ void InstallInterruptHandlers();
 // One <parameter> of the description (integer, double, file, image, geometry, point, …).
 struct Parameter
 {
-  std::string tag;          // XML element name: integer, float, double, boolean, string, file, …
-  std::string name;         // <name>
-  std::string flag;         // <flag> without '-', may be empty
-  std::string longflag;     // <longflag> without '--', may be empty
-  int index = -1;           // <index> for positional arguments, -1 otherwise
-  std::string channel;      // input / output / empty
+  std::string tag;      // XML element name: integer, float, double, boolean, string, file, …
+  std::string name;     // <name>
+  std::string flag;     // <flag> without '-', may be empty
+  std::string longflag; // <longflag> without '--', may be empty
+  int index = -1;       // <index> for positional arguments, -1 otherwise
+  std::string channel;  // input / output / empty
   std::string label;
   std::string description;
-  std::string defaultValue; // <default>, empty when none
+  std::string defaultValue;          // <default>, empty when none
   std::vector<std::string> elements; // <element> of *-enumeration
   std::string coordinateSystem;      // point/pointfile attribute: "lps" or "ras" (Slicer default ras)
   bool multiple = false;             // multiple="true"
@@ -177,8 +197,7 @@ struct ModuleContext
 
 // Parses argv against the XML description, runs body, reports errors, writes return parameters.
 // Returns the process exit code: 0 success, 1 module error, 2 command-line error.
-int RunModule(int argc, char* argv[], const char* xmlDescription,
-              const std::function<void(ModuleContext&)>& body);
+int RunModule(int argc, char* argv[], const char* xmlDescription, const std::function<void(ModuleContext&)>& body);
 
 // Writes to a temporary sibling file and renames it over the final path on Commit(); the
 // temporary is removed if Commit() is never reached, so a failure leaves no partial output.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Reads a Slicer Execution Model <executable> description (ModuleDescription.xsd) with VTK's XML parser.
 #include "mmrepCLIInternal.h"
 
@@ -31,7 +33,7 @@ protected:
   {
     auto* parser = static_cast<XML_Parser>(this->Parser);
     error =
-        "line " + std::to_string(XML_GetCurrentLineNumber(parser)) + ": " + XML_ErrorString(XML_GetErrorCode(parser));
+      "line " + std::to_string(XML_GetCurrentLineNumber(parser)) + ": " + XML_ErrorString(XML_GetErrorCode(parser));
   }
 };
 vtkStandardNewMacro(QuietXMLParser);
@@ -41,7 +43,10 @@ std::string Text(vtkXMLDataElement* e)
   return e && e->GetCharacterData() ? Trim(e->GetCharacterData()) : std::string();
 }
 
-std::string ChildText(vtkXMLDataElement* e, const char* name) { return Text(e->FindNestedElementWithName(name)); }
+std::string ChildText(vtkXMLDataElement* e, const char* name)
+{
+  return Text(e->FindNestedElementWithName(name));
+}
 
 std::string Attribute(vtkXMLDataElement* e, const char* name)
 {
@@ -96,8 +101,10 @@ Parameter ReadParameter(vtkXMLDataElement* e)
       p.index = static_cast<int>(index);
     }
   }
-  if (p.name.empty()) throw ModuleError("a <" + p.tag + "> parameter has no <name>");
-  if (p.flag.size() > 1) throw ModuleError("parameter '" + p.name + "': <flag> must be a single character");
+  if (p.name.empty())
+    throw ModuleError("a <" + p.tag + "> parameter has no <name>");
+  if (p.flag.size() > 1)
+    throw ModuleError("parameter '" + p.name + "': <flag> must be a single character");
   return p;
 }
 } // namespace
@@ -133,7 +140,8 @@ ModuleDescription ModuleDescription::FromXML(const std::string& xml)
   for (int g = 0; g < root->GetNumberOfNestedElements(); ++g)
   {
     vtkXMLDataElement* group = root->GetNestedElement(g);
-    if (std::string(group->GetName()) != "parameters") continue;
+    if (std::string(group->GetName()) != "parameters")
+      continue;
     for (int i = 0; i < group->GetNumberOfNestedElements(); ++i)
     {
       vtkXMLDataElement* e = group->GetNestedElement(i);
@@ -152,7 +160,8 @@ ModuleDescription ModuleDescription::FromXML(const std::string& xml)
 const Parameter* ModuleDescription::Find(const std::string& name) const
 {
   for (const Parameter& p : parameters)
-    if (p.name == name) return &p;
+    if (p.name == name)
+      return &p;
   return nullptr;
 }
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Executable wrapper of a CLI module: the science lives in the module's shared library (Slicer loads it too).
 // Only the executable turns SIGINT/SIGTERM into a clean abort (never inside Slicer's process).
 extern "C" int ModuleEntryPoint(int argc, char* argv[]);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Output safety of a module run: no output may be, contain or lie inside an input, no two outputs
 // may share a path, and outputs are published together only once the whole run succeeded.
 //
@@ -56,9 +58,11 @@ fs::path Resolve(const std::string& path)
 {
   std::error_code ec;
   fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
-  if (ec) p = fs::absolute(path, ec).lexically_normal();
+  if (ec)
+    p = fs::absolute(path, ec).lexically_normal();
   // "out/" and "out" are one path.
-  if (p.has_filename() == false && p.has_parent_path()) p = p.parent_path();
+  if (p.has_filename() == false && p.has_parent_path())
+    p = p.parent_path();
   return p;
 }
 
@@ -67,7 +71,8 @@ bool IsInside(const fs::path& inner, const fs::path& outer)
 {
   auto o = outer.begin(), i = inner.begin();
   for (; o != outer.end(); ++o, ++i)
-    if (i == inner.end() || *i != *o) return false;
+    if (i == inner.end() || *i != *o)
+      return false;
   return i != inner.end();
 }
 
@@ -79,34 +84,37 @@ bool IsDirectory(const fs::path& p)
 
 bool PathLike(const Parameter& p)
 {
-  static const std::set<std::string> tags = {"file",      "directory", "image",     "geometry", "transform",
-                                             "table",     "pointfile", "pointlist", "string"};
+  static const std::set<std::string> tags = {"file",  "directory", "image",     "geometry", "transform",
+                                             "table", "pointfile", "pointlist", "string"};
   return tags.count(p.tag) && !p.multiple;
 }
 
 Role RoleOf(const Parameter& p)
 {
-  if (p.channel == "input") return Role::Input;
-  if (p.channel == "output" || p.tag == "directory") return Role::Output;
+  if (p.channel == "input")
+    return Role::Input;
+  if (p.channel == "output" || p.tag == "directory")
+    return Role::Output;
   return Role::Unknown;
 }
 
 // "input 'x' (--x)", "output 'y' (argument 2)", "'z' (--z)" (no channel), "the return parameter file (…)".
 std::string Named(const PathParameter& p)
 {
-  if (p.description.rfind("the ", 0) == 0 || p.role == Role::Unknown) return p.description;
+  if (p.description.rfind("the ", 0) == 0 || p.role == Role::Unknown)
+    return p.description;
   return (p.role == Role::Input ? "input " : "output ") + p.description;
 }
 
 // Refuses `output` (a file, or a folder when `folder`) that is, contains or lies inside another
 // parameter's path. `self` is the parameter naming it, when known.
-void CheckAgainstParameters(const fs::path& output, const std::string& culprit, bool folder,
-                            const PathParameter* self)
+void CheckAgainstParameters(const fs::path& output, const std::string& culprit, bool folder, const PathParameter* self)
 {
   bool selfSeen = self != nullptr;
   for (const PathParameter& q : state.paths)
   {
-    if (&q == self) continue;
+    if (&q == self)
+      continue;
     if (q.resolved == output)
     {
       if (!selfSeen && q.role != Role::Input) // the parameter naming this output itself
@@ -128,7 +136,8 @@ void CheckAgainstParameters(const fs::path& output, const std::string& culprit, 
 // A known output's folder must exist and be writable before any work (a folder output is created).
 void CheckWritableFolder(const PathParameter& p, bool folder)
 {
-  if (folder) return;
+  if (folder)
+    return;
   const fs::path parent = p.resolved.parent_path();
   if (!IsDirectory(parent))
     throw ModuleError(p.description + ": cannot write '" + p.value + "': folder '" + parent.string() +
@@ -152,7 +161,8 @@ void BeginOutputTransaction(const ModuleDescription& description,
   for (const Parameter& p : description.parameters)
   {
     const auto it = values.find(p.name);
-    if (!PathLike(p) || it == values.end() || it->second.empty() || it->second.front().empty()) continue;
+    if (!PathLike(p) || it == values.end() || it->second.empty() || it->second.front().empty())
+      continue;
     state.paths.push_back({Describe(p), it->second.front(), Resolve(it->second.front()), RoleOf(p)});
     folders.push_back(p.tag == "directory" ? &p : nullptr);
   }
@@ -165,12 +175,14 @@ void BeginOutputTransaction(const ModuleDescription& description,
   for (std::size_t i = 0; i < state.paths.size(); ++i)
   {
     const PathParameter& p = state.paths[i];
-    if (p.role == Role::Input) continue;
+    if (p.role == Role::Input)
+      continue;
     // An unknown-role parameter equal to an input is refused too: it may be an output (a report).
     for (std::size_t j = 0; j < state.paths.size(); ++j)
     {
       const PathParameter& q = state.paths[j];
-      if (j == i || q.resolved != p.resolved || (p.role == Role::Unknown && q.role == Role::Unknown)) continue;
+      if (j == i || q.resolved != p.resolved || (p.role == Role::Unknown && q.role == Role::Unknown))
+        continue;
       throw ModuleError(Named(p) + " and " + Named(q) + " are the same path '" + p.value + "'; give each its own");
     }
     if (p.role == Role::Output)
@@ -231,15 +243,18 @@ void DiscardOutputs()
 void CheckOutputPath(const std::string& path, bool folder)
 {
   std::lock_guard<std::mutex> lock(mutex);
-  if (!state.active) return;
+  if (!state.active)
+    return;
   const fs::path resolved = Resolve(path);
   for (const fs::path& o : state.outputs)
-    if (o == resolved) throw ModuleError("two outputs are the same path '" + path + "'; give each its own");
+    if (o == resolved)
+      throw ModuleError("two outputs are the same path '" + path + "'; give each its own");
   // Parameters without a channel are known as outputs only now: two naming this path (an input
   // and this output, or two outputs) are refused, naming both.
   std::vector<const PathParameter*> naming;
   for (const PathParameter& q : state.paths)
-    if (q.resolved == resolved) naming.push_back(&q);
+    if (q.resolved == resolved)
+      naming.push_back(&q);
   if (naming.size() > 1)
     throw ModuleError(naming[0]->description + " and " + naming[1]->description + " are the same path '" + path +
                       "', which this run writes; give each its own");
@@ -252,7 +267,8 @@ bool DeferPublication(const std::string& finalPath, std::function<void()> publis
                       bool evenOnFailure)
 {
   std::lock_guard<std::mutex> lock(mutex);
-  if (!state.active) return false;
+  if (!state.active)
+    return false;
   state.pending.push_back({finalPath, std::move(publish), std::move(discard), evenOnFailure});
   return true;
 }

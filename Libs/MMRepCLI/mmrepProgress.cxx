@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Slicer progress protocol on stdout, and the output scalars reported through --returnparameterfile.
 #include "mmrepCLIInternal.h"
 #include "mmrepModuleProcessInformation.h"
@@ -20,14 +22,20 @@ std::string Escape(const std::string& text)
   std::string out;
   for (char c : text)
   {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else out += c == '\n' ? ' ' : c;
+    if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else
+      out += c == '\n' ? ' ' : c;
   }
   return out;
 }
 
-double Clamp01(double f) { return f >= 0.0 ? std::min(f, 1.0) : 0.0; } // NaN -> 0
+double Clamp01(double f)
+{
+  return f >= 0.0 ? std::min(f, 1.0) : 0.0;
+} // NaN -> 0
 
 double Seconds()
 {
@@ -37,14 +45,23 @@ double Seconds()
 // Set by the signal handler, read by every Progress call (lock-free, so async-signal-safe).
 std::atomic<int> interruptSignal{0};
 
-extern "C" void OnInterrupt(int signal) { interruptSignal.store(signal); }
+extern "C" void OnInterrupt(int signal)
+{
+  interruptSignal.store(signal);
+}
 
 // Once a run has committed an output, it finishes: aborting then would leave a partial set.
 std::atomic<bool> committed{false};
 } // namespace
 
-void detail::BeginRun() { committed.store(false); }
-void detail::OutputCommitted() { committed.store(true); }
+void detail::BeginRun()
+{
+  committed.store(false);
+}
+void detail::OutputCommitted()
+{
+  committed.store(true);
+}
 
 void InstallInterruptHandlers()
 {
@@ -58,14 +75,18 @@ void InstallInterruptHandlers()
 
 void Progress::PollAbort() const
 {
-  if (std::this_thread::get_id() != owner_ || committed.load()) return; // never unwind a worker thread
-  if (const int signal = interruptSignal.load()) throw Aborted{signal};
-  if (information_ && *static_cast<volatile unsigned char*>(&information_->Abort)) throw Aborted{0};
+  if (std::this_thread::get_id() != owner_ || committed.load())
+    return; // never unwind a worker thread
+  if (const int signal = interruptSignal.load())
+    throw Aborted{signal};
+  if (information_ && *static_cast<volatile unsigned char*>(&information_->Abort))
+    throw Aborted{0};
 }
 
 void Progress::Update(double overall, double stage)
 {
-  if (!information_) return;
+  if (!information_)
+    return;
   information_->Progress = static_cast<float>(overall);
   information_->StageProgress = static_cast<float>(stage);
   information_->ElapsedTime = Seconds() - startTime_;
@@ -88,7 +109,10 @@ void Progress::Start(const std::string& comment)
   }
 }
 
-void Progress::Report(double fraction) { ReportRange(0.0, 1.0, fraction); }
+void Progress::Report(double fraction)
+{
+  ReportRange(0.0, 1.0, fraction);
+}
 
 void Progress::ReportRange(double from, double to, double fraction)
 {
@@ -96,7 +120,8 @@ void Progress::ReportRange(double from, double to, double fraction)
   const double overall = Clamp01(from + (to - from) * Clamp01(fraction));
   const int value = static_cast<int>(std::lround(overall * 1000.0));
   std::lock_guard<std::mutex> lock(mutex_);
-  if (value <= last_) return; // never backwards, never twice
+  if (value <= last_)
+    return; // never backwards, never twice
   last_ = value;
   std::cout << "<filter-progress>" << detail::FormatDouble(value / 1000.0) << "</filter-progress>" << std::endl;
   Update(value / 1000.0, Clamp01(fraction));
@@ -106,7 +131,8 @@ void Progress::Stage(const std::string& name)
 {
   PollAbort();
   std::lock_guard<std::mutex> lock(mutex_);
-  if (!information_) return;
+  if (!information_)
+    return;
   std::snprintf(information_->ProgressMessage, sizeof(information_->ProgressMessage), "%s", name.c_str());
   Update(std::max(last_, 0) / 1000.0, 0.0);
 }
@@ -114,24 +140,33 @@ void Progress::Stage(const std::string& name)
 void Progress::End()
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (comment_.empty()) return; // not started, or already ended
-  if (last_ < 1000) std::cout << "<filter-progress>1</filter-progress>\n";
+  if (comment_.empty())
+    return; // not started, or already ended
+  if (last_ < 1000)
+    std::cout << "<filter-progress>1</filter-progress>\n";
   last_ = 1000;
   std::cout << "<filter-end>\n<filter-name>" << comment_ << "</filter-name>\n</filter-end>" << std::endl;
   comment_.clear();
   Update(1.0, 1.0);
 }
 
-void ReturnParameters::Set(const std::string& name, double value) { values_[name] = detail::FormatDouble(value); }
+void ReturnParameters::Set(const std::string& name, double value)
+{
+  values_[name] = detail::FormatDouble(value);
+}
 
-void ReturnParameters::Set(const std::string& name, long long value) { values_[name] = std::to_string(value); }
+void ReturnParameters::Set(const std::string& name, long long value)
+{
+  values_[name] = std::to_string(value);
+}
 
 void ReturnParameters::Set(const std::string& name, const std::string& value)
 {
   // One line per parameter in the return file.
   std::string v = value;
   for (char& c : v)
-    if (c == '\n' || c == '\r') c = ' ';
+    if (c == '\n' || c == '\r')
+      c = ' ';
   values_[name] = v;
 }
 

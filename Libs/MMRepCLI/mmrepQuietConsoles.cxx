@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // ITK and VTK print their own warnings and errors on stderr (for instance a VTK reader meeting a
 // corrupt file). A module reports every problem as one line itself, from the exceptions our
 // libraries throw, so during a module run those consoles are silenced.

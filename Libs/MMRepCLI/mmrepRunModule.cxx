@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // RunModule: command line (TCLAP) from the XML description, error reporting, return parameters.
 #include "mmrepCLIInternal.h"
 #include "mmrepModuleProcessInformation.h"
@@ -60,16 +62,19 @@ std::string ModuleName(const char* argv0, const ModuleDescription* description)
   if (so != std::string::npos && name.rfind("lib", 0) == 0)
   {
     name = name.substr(3, so - 3);
-    if (name.size() > 3 && name.compare(name.size() - 3, 3, "Lib") == 0) name.resize(name.size() - 3);
+    if (name.size() > 3 && name.compare(name.size() - 3, 3, "Lib") == 0)
+      name.resize(name.size() - 3);
   }
-  if (name.empty() && description) name = description->title;
+  if (name.empty() && description)
+    name = description->title;
   return name.empty() ? "module" : name;
 }
 
 std::string OneLine(std::string text)
 {
   for (char& c : text)
-    if (c == '\n' || c == '\r') c = ' ';
+    if (c == '\n' || c == '\r')
+      c = ' ';
   return detail::Trim(text);
 }
 
@@ -86,7 +91,8 @@ int Fail(const std::string& module, const std::string& what, int code)
 std::string Help(const Parameter& p)
 {
   std::string help = p.label.empty() ? p.name : p.label;
-  if (!p.description.empty()) help += ": " + p.description;
+  if (!p.description.empty())
+    help += ": " + p.description;
   if (!p.elements.empty())
   {
     help += " (one of";
@@ -94,7 +100,8 @@ std::string Help(const Parameter& p)
       help += " " + e;
     help += ")";
   }
-  if (!p.defaultValue.empty()) help += " (default: " + p.defaultValue + ")";
+  if (!p.defaultValue.empty())
+    help += " (default: " + p.defaultValue + ")";
   return help;
 }
 
@@ -109,13 +116,16 @@ std::string Explain(const TCLAP::ArgException& e, const std::vector<std::pair<co
   }
   if (error.rfind("Required argument", 0) == 0)
     for (const auto& [p, arg] : args)
-      if (arg->isRequired() && !arg->isSet()) return "missing required argument " + detail::Describe(*p);
+      if (arg->isRequired() && !arg->isSet())
+        return "missing required argument " + detail::Describe(*p);
   std::string id = e.argId();
-  if (id.rfind("Argument: ", 0) == 0) id = id.substr(10);
+  if (id.rfind("Argument: ", 0) == 0)
+    id = id.substr(10);
   for (const auto& [p, arg] : args)
     if (arg->toString() == id)
     {
-      if (error.rfind("Missing a value", 0) == 0) return "parameter " + detail::Describe(*p) + " needs a value";
+      if (error.rfind("Missing a value", 0) == 0)
+        return "parameter " + detail::Describe(*p) + " needs a value";
       if (error.rfind("Argument already set", 0) == 0)
         return "parameter " + detail::Describe(*p) + " given more than once";
       return "parameter " + detail::Describe(*p) + ": " + error;
@@ -134,7 +144,8 @@ struct ParsedCommandLine
 ParsedCommandLine Parse(int argc, char* argv[], const ModuleDescription& d, const std::string& module)
 {
   std::string message = d.title.empty() ? module : d.title;
-  if (!d.description.empty()) message += ": " + d.description;
+  if (!d.description.empty())
+    message += ": " + d.description;
   TCLAP::CmdLine cmd(message, ' ', d.version.empty() ? "unknown" : d.version);
   cmd.setExceptionHandling(false); // report errors ourselves, never exit() inside Slicer
   std::vector<std::unique_ptr<TCLAP::Arg>> owned;
@@ -142,9 +153,9 @@ ParsedCommandLine Parse(int argc, char* argv[], const ModuleDescription& d, cons
 
   TCLAP::SwitchArg xml("", "xml", "Print the XML description and exit", false);
   TCLAP::ValueArg<std::string> returnFile(
-      "", "returnparameterfile", "File where the output scalars are written as name = value", false, "", "file");
-  TCLAP::ValueArg<std::string> processAddress("", "processinformationaddress", "Address of Slicer's in-process progress block",
-                                              false, "", "address");
+    "", "returnparameterfile", "File where the output scalars are written as name = value", false, "", "file");
+  TCLAP::ValueArg<std::string> processAddress("", "processinformationaddress",
+                                              "Address of Slicer's in-process progress block", false, "", "address");
   cmd.add(xml);
   cmd.add(returnFile);
   cmd.add(processAddress);
@@ -159,7 +170,8 @@ ParsedCommandLine Parse(int argc, char* argv[], const ModuleDescription& d, cons
       positional.push_back(&p);
       continue;
     }
-    if (p.IsReturnValue()) continue;
+    if (p.IsReturnValue())
+      continue;
     const std::string longflag = p.flag.empty() && p.longflag.empty() ? p.name : p.longflag;
     const std::string help = Help(p);
     if (p.tag == "boolean")
@@ -168,7 +180,7 @@ ParsedCommandLine Parse(int argc, char* argv[], const ModuleDescription& d, cons
       owned.push_back(std::make_unique<TCLAP::MultiArg<std::string>>(p.flag, longflag, help, false, p.tag));
     else
       owned.push_back(
-          std::make_unique<TCLAP::ValueArg<std::string>>(p.flag, longflag, help, false, p.defaultValue, p.tag));
+        std::make_unique<TCLAP::ValueArg<std::string>>(p.flag, longflag, help, false, p.defaultValue, p.tag));
     cmd.add(*owned.back());
     args.emplace_back(&p, owned.back().get());
   }
@@ -187,7 +199,8 @@ ParsedCommandLine Parse(int argc, char* argv[], const ModuleDescription& d, cons
   try
   {
     std::vector<std::string> tokens(argv, argv + argc);
-    if (!tokens.empty()) tokens[0] = module; // usage shows the module name, not the path Slicer used
+    if (!tokens.empty())
+      tokens[0] = module; // usage shows the module name, not the path Slicer used
     cmd.parse(tokens);
   }
   catch (TCLAP::SpecificationException&)
@@ -211,7 +224,8 @@ ParsedCommandLine Parse(int argc, char* argv[], const ModuleDescription& d, cons
   }
   for (const auto& [p, arg] : args)
   {
-    if (!arg->isSet()) continue;
+    if (!arg->isSet())
+      continue;
     std::vector<std::string>& v = parsed.values[p->name];
     if (auto* s = dynamic_cast<TCLAP::SwitchArg*>(arg))
       v.push_back(s->getValue() ? "true" : "false");
@@ -234,7 +248,8 @@ void WriteReturnParameters(const std::string& path, const ModuleDescription& d, 
     for (const Parameter& p : d.parameters) // in declaration order
       if (const auto it = outputs.Values().find(p.name); it != outputs.Values().end())
         file << p.name << " = " << it->second << "\n";
-    if (!file.flush()) throw ModuleError("cannot write return parameter file '" + path + "'");
+    if (!file.flush())
+      throw ModuleError("cannot write return parameter file '" + path + "'");
   }
   out.Commit();
 }
@@ -273,7 +288,8 @@ int RunModule(int argc, char* argv[], const char* xmlDescription, const std::fun
     bool published = false;
     ~DiscardUnlessPublished()
     {
-      if (!published) detail::DiscardOutputs();
+      if (!published)
+        detail::DiscardOutputs();
     }
   } transaction;
   try
@@ -314,7 +330,10 @@ int RunModule(int argc, char* argv[], const char* xmlDescription, const std::fun
       std::cerr << module << ": aborted" << std::endl;
       return 1;
     }
-    std::cerr << module << ": interrupted by " << (a.signal == SIGINT ? "SIGINT" : a.signal == SIGTERM ? "SIGTERM" : "a signal")
+    std::cerr << module << ": interrupted by "
+              << (a.signal == SIGINT    ? "SIGINT"
+                  : a.signal == SIGTERM ? "SIGTERM"
+                                        : "a signal")
               << ", nothing written" << std::endl;
     return 128 + a.signal;
   }

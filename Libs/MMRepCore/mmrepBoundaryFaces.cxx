@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepBoundaryFaces.h"
 
 #include <vtkCellArray.h>
@@ -19,10 +21,14 @@ const std::vector<LocalFace>& LocalFaces(ElementType type)
   static const std::vector<LocalFace> none;
   switch (type)
   {
-    case ElementType::Hexahedron: return hex;
-    case ElementType::Wedge: return wedge;
-    case ElementType::Tetrahedron: return tet;
-    default: return none;
+    case ElementType::Hexahedron:
+      return hex;
+    case ElementType::Wedge:
+      return wedge;
+    case ElementType::Tetrahedron:
+      return tet;
+    default:
+      return none;
   }
 }
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Faces of the solid elements: one local face table per element type, and the boundary of a mesh
 // (the faces used by exactly one solid), as (element, local face) pairs or as a VTK surface.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepControlPointMatch.h"
 
 #include <algorithm>
@@ -33,8 +35,8 @@ std::vector<Point3> MatchControlPointsByName(const std::vector<Landmark>& landma
       std::string names;
       for (const auto& a : landmarks)
         names += " " + a.name;
-      throw std::invalid_argument("control points: '" + l.name + "' is missing (the atlas landmarks are named" +
-                                  names + ")");
+      throw std::invalid_argument("control points: '" + l.name + "' is missing (the atlas landmarks are named" + names +
+                                  ")");
     }
     targets.push_back(it->second);
   }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Control points of a subject paired with the landmarks of the atlas by name.
 #pragma once
 

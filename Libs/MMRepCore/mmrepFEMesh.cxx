@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepFEMesh.h"
 
 #include <numeric>
@@ -11,10 +13,14 @@ int NodeCount(ElementType type)
 {
   switch (type)
   {
-    case ElementType::Cable: return 2;
-    case ElementType::Tetrahedron: return 4;
-    case ElementType::Hexahedron: return 8;
-    case ElementType::Wedge: return 6;
+    case ElementType::Cable:
+      return 2;
+    case ElementType::Tetrahedron:
+      return 4;
+    case ElementType::Hexahedron:
+      return 8;
+    case ElementType::Wedge:
+      return 6;
   }
   throw std::invalid_argument("unknown element type " + std::to_string(static_cast<int>(type)));
 }
@@ -23,10 +29,14 @@ const char* ElementTypeName(ElementType type)
 {
   switch (type)
   {
-    case ElementType::Cable: return "cable";
-    case ElementType::Tetrahedron: return "tetrahedron";
-    case ElementType::Hexahedron: return "hexahedron";
-    case ElementType::Wedge: return "wedge";
+    case ElementType::Cable:
+      return "cable";
+    case ElementType::Tetrahedron:
+      return "tetrahedron";
+    case ElementType::Hexahedron:
+      return "hexahedron";
+    case ElementType::Wedge:
+      return "wedge";
   }
   return "unknown";
 }
@@ -35,10 +45,14 @@ const char* TissueLayerName(TissueLayer layer)
 {
   switch (layer)
   {
-    case TissueLayer::None: return "none";
-    case TissueLayer::Epidermis: return "epidermis";
-    case TissueLayer::Dermis: return "dermis";
-    case TissueLayer::Hypodermis: return "hypodermis";
+    case TissueLayer::None:
+      return "none";
+    case TissueLayer::Epidermis:
+      return "epidermis";
+    case TissueLayer::Dermis:
+      return "dermis";
+    case TissueLayer::Hypodermis:
+      return "hypodermis";
   }
   return "unknown";
 }
@@ -87,16 +101,17 @@ void FEMesh::Validate() const
     const int n = NodeCount(e.type);
     for (int k = 0; k < n; ++k)
       if (e.nodes[k] < 0 || e.nodes[k] >= nodeCount)
-        throw std::invalid_argument("element " + std::to_string(i) + " refers to node " +
-                                    std::to_string(e.nodes[k]) + " of " + std::to_string(nodeCount));
+        throw std::invalid_argument("element " + std::to_string(i) + " refers to node " + std::to_string(e.nodes[k]) +
+                                    " of " + std::to_string(nodeCount));
   }
   if (!mirror.empty() && mirror.size() != nodes.size())
     throw std::invalid_argument("mirror map has " + std::to_string(mirror.size()) + " entries for " +
                                 std::to_string(nodes.size()) + " nodes");
   for (std::size_t i = 0; i < mirror.size(); ++i)
-    if (mirror[i] < 0 || mirror[i] >= nodeCount || mirror[static_cast<std::size_t>(mirror[i])] != static_cast<std::int32_t>(i))
-      throw std::invalid_argument("mirror map: node " + std::to_string(i) + " has partner " + std::to_string(mirror[i]) +
-                                  " whose partner is not node " + std::to_string(i));
+    if (mirror[i] < 0 || mirror[i] >= nodeCount ||
+        mirror[static_cast<std::size_t>(mirror[i])] != static_cast<std::int32_t>(i))
+      throw std::invalid_argument("mirror map: node " + std::to_string(i) + " has partner " +
+                                  std::to_string(mirror[i]) + " whose partner is not node " + std::to_string(i));
   for (const auto& [name, ids] : nodeSets)
     for (auto id : ids)
       if (id < 0 || id >= nodeCount)
@@ -111,13 +126,13 @@ void FEMesh::Validate() const
       if (id < 0 || id >= nodeCount)
         throw std::invalid_argument("muscle '" + name + "' refers to node " + std::to_string(id));
     if (!m.cables.empty() && m.cables.size() + 1 != m.nodes.size())
-      throw std::invalid_argument("muscle '" + name + "' has " + std::to_string(m.cables.size()) +
-                                  " cables for " + std::to_string(m.nodes.size()) + " points");
+      throw std::invalid_argument("muscle '" + name + "' has " + std::to_string(m.cables.size()) + " cables for " +
+                                  std::to_string(m.nodes.size()) + " points");
     for (std::size_t k = 0; k < m.cables.size(); ++k)
     {
       const auto c = m.cables[k];
-      if (c < 0 || c >= elementCount || elements[c].type != ElementType::Cable ||
-          elements[c].nodes[0] != m.nodes[k] || elements[c].nodes[1] != m.nodes[k + 1])
+      if (c < 0 || c >= elementCount || elements[c].type != ElementType::Cable || elements[c].nodes[0] != m.nodes[k] ||
+          elements[c].nodes[1] != m.nodes[k + 1])
         throw std::invalid_argument("muscle '" + name + "' cable " + std::to_string(k) +
                                     " does not join its track points");
     }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The FE face model: nodes, solid elements in tissue layers, cable elements, named sets,
 // muscle tracks and landmarks. Coordinates are millimetres in LPS (ITK and Slicer convention).
 //
@@ -57,9 +59,9 @@ struct Embedding
 // A muscle fibre track: an ordered chain of mesh nodes linked by cable elements.
 struct MuscleTrack
 {
-  std::vector<std::int32_t> nodes;     // polyline points, in order (first = insertion)
-  std::vector<std::int32_t> cables;    // indices of the Cable elements, cables[i] joins nodes[i], nodes[i+1]
-  std::vector<Embedding> embedding;    // one per node: the solid element it lies in
+  std::vector<std::int32_t> nodes;  // polyline points, in order (first = insertion)
+  std::vector<std::int32_t> cables; // indices of the Cable elements, cables[i] joins nodes[i], nodes[i+1]
+  std::vector<Embedding> embedding; // one per node: the solid element it lies in
   // Maximum active force of the fibre in N (the tension every cable of the track carries at full
   // activation and optimal length). Files written before it was stored read kDefaultMaximumForce.
   double maximumForce = kDefaultMaximumForce;

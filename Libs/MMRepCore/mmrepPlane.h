@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // A plane (the mid-sagittal plane of a head or of a symmetric FE model), its least-squares fit to
 // points or to a node set of an FE mesh, and its six-number form (point, normal) of the modules.
 #pragma once
@@ -14,7 +16,7 @@ namespace mmrep
 
 struct Plane
 {
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // a point on the plane (LPS mm)
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();   // a point on the plane (LPS mm)
   Eigen::Vector3d normal = Eigen::Vector3d::UnitX(); // unit normal, pointing to the patient's left (+x side)
 
   double SignedDistance(const Eigen::Vector3d& p) const { return normal.dot(p - point); }

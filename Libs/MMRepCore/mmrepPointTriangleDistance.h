@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Closest point on a triangle (Ericson, Real-Time Collision Detection, 2005, §5.1.5): region
 // tests on barycentric coordinates, exact for every point, no square roots.
 #pragma once
@@ -11,7 +13,13 @@ namespace mmrep
 // pseudo-normal for the sign of a distance.
 enum class TriangleFeature : unsigned char
 {
-  A, B, C, AB, AC, BC, Face
+  A,
+  B,
+  C,
+  AB,
+  AC,
+  BC,
+  Face
 };
 
 inline Eigen::Vector3d ClosestPointOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
@@ -66,8 +74,8 @@ inline Eigen::Vector3d ClosestPointOnTriangle(const Eigen::Vector3d& p, const Ei
   return a + ab * (vb * denom) + ac * (vc * denom); // interior
 }
 
-inline double SquaredDistanceToTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                                        const Eigen::Vector3d& b, const Eigen::Vector3d& c)
+inline double SquaredDistanceToTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                        const Eigen::Vector3d& c)
 {
   return (ClosestPointOnTriangle(p, a, b, c) - p).squaredNorm();
 }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // How far mesh nodes lie from a triangle surface (closest point on its cells): the accuracy
 // measure of the registration, the refinement, the repair and the speaker model's report.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The multi-level virtual-grid optimiser that builds the steps of an ElasticTransform by
 // decreasing the registration energy (paper Eq. 2)
 //   E = Σ_points |d_map(p)(R(a))| + Σ_i W_i |R(ā_i) − s̄_i|
@@ -35,15 +37,14 @@
 namespace mmrep
 {
 
-struct ElasticOptimizerOptions
+// The solver settings shared by the optimiser and the registrations that drive it (R, Q): their
+// option structs derive from it, so a registration hands its settings over in one assignment.
+struct ElasticSolverSettings
 {
-  int firstLevel = 1;
-  int finestLevel = 5;
-  double stepSafety = 0.4;   // |δ| ≤ stepSafety / L (< 1 guarantees non-folding)
-  int maximumSweeps = 20;    // per level
-  double tolerance = 1e-3;   // relative energy decrease of a sweep below which the level ends
-  bool symmetric = false;    // mirrored steps about frame x = 0 (box must be symmetric in x)
-  bool fixBoundary = false;  // only interior grid nodes move (local refinement)
+  double stepSafety = 0.4;             // |δ| ≤ stepSafety / L (< 1 guarantees non-folding)
+  int maximumSweeps = 20;              // per level
+  double tolerance = 1e-3;             // relative energy decrease of a sweep below which the level ends
+  bool symmetric = false;              // mirrored steps about frame x = 0 (box must be symmetric in x)
   double controlPointTolerance = 0.5;  // mm
   double controlPointWeightCap = 1000; // weights double up to this
   double elementQualityFloor = 0.3;    // scaled Jacobian the guarded hexahedra keep (see above)
@@ -65,6 +66,13 @@ struct ElasticOptimizerOptions
   // quadratic in the step and the surfaces' gain linear, so steps that the surfaces need still pass.
   double holdingWeight = 0.0;
   int regularizationFirstLevel = 1; // first level of the sliding and holding terms
+};
+
+struct ElasticOptimizerOptions : ElasticSolverSettings
+{
+  int firstLevel = 1;
+  int finestLevel = 5;
+  bool fixBoundary = false; // only interior grid nodes move (local refinement)
   std::function<void(double)> progress;
 };
 

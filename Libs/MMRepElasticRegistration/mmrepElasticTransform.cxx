@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepElasticTransform.h"
 #include "mmrepWorkerThreads.h"
 
@@ -33,7 +35,8 @@ namespace
 double GradientNorm(const Eigen::Vector3d& u, const Eigen::Vector3d& h)
 {
   const double bx = ElasticBump(u.x()), by = ElasticBump(u.y()), bz = ElasticBump(u.z());
-  const Eigen::Vector3d g(ElasticBumpDerivative(u.x()) * by * bz / h.x(), bx * ElasticBumpDerivative(u.y()) * bz / h.y(),
+  const Eigen::Vector3d g(ElasticBumpDerivative(u.x()) * by * bz / h.x(),
+                          bx * ElasticBumpDerivative(u.y()) * bz / h.y(),
                           bx * by * ElasticBumpDerivative(u.z()) / h.z());
   return g.norm();
 }
@@ -97,8 +100,9 @@ double ElasticTransform::Bump(const Eigen::Vector3d& p, const Eigen::Vector3d& n
   }
   const double bx = ElasticBump(tx), by = ElasticBump(ty), bz = ElasticBump(tz);
   if (gradient)
-    *gradient = Eigen::Vector3d(ElasticBumpDerivative(tx) * by * bz / h.x(), bx * ElasticBumpDerivative(ty) * bz / h.y(),
-                                bx * by * ElasticBumpDerivative(tz) / h.z());
+    *gradient =
+      Eigen::Vector3d(ElasticBumpDerivative(tx) * by * bz / h.x(), bx * ElasticBumpDerivative(ty) * bz / h.y(),
+                      bx * by * ElasticBumpDerivative(tz) / h.z());
   return bx * by * bz;
 }
 

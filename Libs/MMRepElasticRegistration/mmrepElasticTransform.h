@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The elastic registration function R = r_N ∘ … ∘ r_1 ∘ A of MMRep (paper §3.1–3.3).
 //
 // A is a similarity (the initial alignment, identity for a local refinement Q). Each elementary
@@ -109,7 +111,7 @@ private:
   struct LevelIndex
   {
     int pad = 2;
-    int dim = 0; // cells + 2 pad per axis
+    int dim = 0;                      // cells + 2 pad per axis
     std::vector<std::uint32_t> start; // CSR offsets, dim³ + 1
     std::vector<std::uint32_t> steps;
   };

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The grids of an atlas registration, sized before the work: the subject's distance maps and the
 // grid its transform is sampled on for output (a displacement field).
 #pragma once

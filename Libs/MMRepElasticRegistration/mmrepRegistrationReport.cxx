@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The registration report: node-to-surface errors of a stage, JSON and Markdown tables, Q's stage.
 #include "mmrepAtlasRegistration.h"
 
@@ -16,40 +18,11 @@ namespace mmrep
 {
 namespace
 {
-nlohmann::json StatsJson(const SurfaceErrorStatistics& s)
+nlohmann::json StatsJson(const SurfaceDistance& s)
 {
   return {{"count", s.count}, {"mean", s.mean}, {"max", s.max}, {"sigma", s.sigma}};
 }
 } // namespace
-
-SurfaceErrorStatistics MeasureSurfaceError(const std::vector<Point3>& nodes, const std::vector<std::int32_t>& ids,
-                                           vtkPolyData* surface)
-{
-  SurfaceErrorStatistics s;
-  if (ids.empty() || surface == nullptr || surface->GetNumberOfCells() == 0)
-    return s;
-  vtkNew<vtkStaticCellLocator> locator;
-  locator->SetDataSet(surface);
-  locator->BuildLocator();
-  vtkNew<vtkGenericCell> cell;
-  double sum = 0, sum2 = 0;
-  for (auto id : ids)
-  {
-    const Point3& p = nodes[static_cast<std::size_t>(id)];
-    double x[3] = {p.x(), p.y(), p.z()}, closest[3], d2 = 0;
-    vtkIdType cellId = -1;
-    int subId = 0;
-    locator->FindClosestPoint(x, closest, cell, cellId, subId, d2);
-    const double d = std::sqrt(d2);
-    sum += d;
-    sum2 += d * d;
-    s.max = std::max(s.max, d);
-  }
-  s.count = ids.size();
-  s.mean = sum / static_cast<double>(s.count);
-  s.sigma = std::sqrt(std::max(0.0, sum2 / static_cast<double>(s.count) - s.mean * s.mean));
-  return s;
-}
 
 std::string RegistrationReport::ToJson() const
 {
@@ -89,7 +62,7 @@ std::string Cell(double v, bool defined, int precision = 3)
   return buf;
 }
 
-std::string StatsCells(const SurfaceErrorStatistics& s)
+std::string StatsCells(const SurfaceDistance& s)
 {
   const bool d = s.count > 0;
   return Cell(s.mean, d) + " | " + Cell(s.max, d) + " | " + Cell(s.sigma, d);
@@ -120,8 +93,9 @@ std::string RegistrationReport::ToMarkdown(const std::string& title) const
   {
     md << "\n| control point | error (mm) | final weight |\n|---|---:|---:|\n";
     for (std::size_t i = 0; i < controlNames.size(); ++i)
-      md << "| " << controlNames[i] << " | " << Cell(i < controlErrors.size() ? controlErrors[i] : 0, i < controlErrors.size())
-         << " | " << Cell(i < controlWeights.size() ? controlWeights[i] : 0, i < controlWeights.size(), 1) << " |\n";
+      md << "| " << controlNames[i] << " | "
+         << Cell(i < controlErrors.size() ? controlErrors[i] : 0, i < controlErrors.size()) << " | "
+         << Cell(i < controlWeights.size() ? controlWeights[i] : 0, i < controlWeights.size(), 1) << " |\n";
   }
   return md.str();
 }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The three symmetry modes of the registration by name (mmrepAtlasRegistration.h).
 #include "mmrepAtlasRegistration.h"
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Abaqus / CalculiX input deck (.inp): mesh and sets only, no material or step, so the file can be
 // *INCLUDEd from an analysis deck. Ids are 1-based: node id = node index + 1, element id =
 // element index + 1 (solids and cables share one numbering, as Abaqus requires). A half model
@@ -150,8 +152,8 @@ void WriteAbaqus(const FEMesh& mesh, std::ostream& out)
     const auto set = std::distance(mesh.nodeSets.begin(), mesh.nodeSets.find(kSymmetryBoundarySet));
     const std::string& name = names.nodeSets[static_cast<std::size_t>(set)];
     out << "** symmetry boundary of this half model: normal displacement 0 on the mid-sagittal plane (point "
-        << FormatDouble(plane.point.x()) << ", " << FormatDouble(plane.point.y()) << ", " << FormatDouble(plane.point.z())
-        << ")\n";
+        << FormatDouble(plane.point.x()) << ", " << FormatDouble(plane.point.y()) << ", "
+        << FormatDouble(plane.point.z()) << ")\n";
     out << "*TRANSFORM, NSET=" << name << ", TYPE=R\n"
         << FormatDouble(n.x()) << ", " << FormatDouble(n.y()) << ", " << FormatDouble(n.z()) << ", "
         << FormatDouble(b.x()) << ", " << FormatDouble(b.y()) << ", " << FormatDouble(b.z()) << "\n";

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Slicer's SPACE tag in mesh files (see mmrepCoordinateSpace.h).
 #include "mmrepCoordinateSpace.h"
 
@@ -14,15 +16,18 @@ constexpr const char* kTag = "SPACE"; // Slicer follows NRRD's name
 
 FileSpace Parse(const std::string& value)
 {
-  if (value == "LPS") return FileSpace::LPS;
-  if (value == "RAS") return FileSpace::RAS;
+  if (value == "LPS")
+    return FileSpace::LPS;
+  if (value == "RAS")
+    return FileSpace::RAS;
   return FileSpace::Untagged;
 }
 } // namespace
 
 FileSpace SpaceFromHeader(const char* header)
 {
-  if (header == nullptr) return FileSpace::Untagged;
+  if (header == nullptr)
+    return FileSpace::Untagged;
   const std::string text = header;
   const auto at = text.find(std::string(kTag) + "=");
   return at == std::string::npos ? FileSpace::Untagged : Parse(text.substr(at + 6, 3));
@@ -37,12 +42,14 @@ FileSpace SpaceFromFieldData(vtkDataObject* data)
 
 void RemoveSpaceTag(vtkDataObject* data)
 {
-  if (data && data->GetFieldData()) data->GetFieldData()->RemoveArray(kTag);
+  if (data && data->GetFieldData())
+    data->GetFieldData()->RemoveArray(kTag);
 }
 
 void FlipRASToLPS(vtkPoints* points)
 {
-  if (points == nullptr) return;
+  if (points == nullptr)
+    return;
   for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
   {
     double p[3];

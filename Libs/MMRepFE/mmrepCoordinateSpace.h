@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Slicer's coordinate-system tag in mesh files (vtkMRMLModelStorageNode, Slicer >= 4.11): "SPACE=LPS"
 // or "SPACE=RAS" in the header of legacy .vtk (and .stl) files, a one-value string array named
 // "SPACE" in the field data of .vtp/.vtu files. Untagged files are LPS (Slicer's default since 4.11
@@ -20,10 +22,13 @@ enum class FileSpace
   RAS
 };
 
-FileSpace SpaceFromHeader(const char* header);          // legacy header / STL header
-FileSpace SpaceFromFieldData(vtkDataObject* data);      // .vtp / .vtu field data
-void RemoveSpaceTag(vtkDataObject* data);               // the tag is file metadata, not data
-void FlipRASToLPS(vtkPoints* points);                   // (x, y, z) -> (-x, -y, z)
-inline const char* LPSHeaderTag() { return "SPACE=LPS"; } // what Slicer writes in legacy headers
+FileSpace SpaceFromHeader(const char* header);     // legacy header / STL header
+FileSpace SpaceFromFieldData(vtkDataObject* data); // .vtp / .vtu field data
+void RemoveSpaceTag(vtkDataObject* data);          // the tag is file metadata, not data
+void FlipRASToLPS(vtkPoints* points);              // (x, y, z) -> (-x, -y, z)
+inline const char* LPSHeaderTag()
+{
+  return "SPACE=LPS";
+} // what Slicer writes in legacy headers
 
 } // namespace mmrep

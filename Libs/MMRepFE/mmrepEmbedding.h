@@ -1,13 +1,21 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Points embedded in solid elements (muscle track points): their position from the element's
 // nodes and parametric coordinates (VTK's interpolation functions of that cell type).
 #pragma once
 
 #include "mmrepFEMesh.h"
 
+#include <array>
 #include <vector>
 
 namespace mmrep
 {
+
+// Shape-function weights of a point with parametric coordinates `pcoords` in a solid element
+// (VTK convention for hexahedra, wedges and tetrahedra), in the element's node order. Throws
+// std::invalid_argument for a cable.
+std::vector<double> ShapeFunctions(ElementType type, const std::array<double, 3>& pcoords);
 
 // The point at `embedding`'s parametric coordinates in its element. Throws std::invalid_argument
 // for an element index out of range or a cable.

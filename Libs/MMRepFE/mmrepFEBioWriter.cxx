@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // FEBio input (.feb, format 3.0): the <Mesh> section only (nodes, element parts, node and element
 // sets), to be completed with materials, MeshDomains and steps in FEBio Studio or a template.
 // Parts: one per (tissue layer, solid type), named "<layer set>_<type>" (layer_epidermis_hex8, …),
@@ -18,10 +20,14 @@ const char* FEBioType(ElementType type)
 {
   switch (type)
   {
-    case ElementType::Hexahedron: return "hex8";
-    case ElementType::Wedge: return "penta6";
-    case ElementType::Tetrahedron: return "tet4";
-    case ElementType::Cable: return "line2";
+    case ElementType::Hexahedron:
+      return "hex8";
+    case ElementType::Wedge:
+      return "penta6";
+    case ElementType::Tetrahedron:
+      return "tet4";
+    case ElementType::Cable:
+      return "line2";
   }
   return "";
 }
@@ -155,8 +161,8 @@ void WriteFEBio(const FEMesh& mesh, std::ostream& out)
             << "," << f.nodes[3] + 1 << "</quad4>\n";
       out << "    </Surface>\n";
     }
-    out << "    <SurfacePair name=\"lips\">\n      <primary>" << upperName << "</primary>\n      <secondary>" << lowerName
-        << "</secondary>\n    </SurfacePair>\n";
+    out << "    <SurfacePair name=\"lips\">\n      <primary>" << upperName << "</primary>\n      <secondary>"
+        << lowerName << "</secondary>\n    </SurfacePair>\n";
   }
   out << "  </Mesh>\n";
   if (lips)

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepFEExport.h"
 
 #include <algorithm>
@@ -77,8 +79,8 @@ std::string FormatDouble(double value)
 void CheckWritable(const FEMesh& mesh, const std::string& path)
 {
   if (mesh.Empty())
-    throw std::runtime_error(path + ": cannot write an empty mesh (" + std::to_string(mesh.nodes.size()) +
-                             " nodes, " + std::to_string(mesh.elements.size()) + " elements)");
+    throw std::runtime_error(path + ": cannot write an empty mesh (" + std::to_string(mesh.nodes.size()) + " nodes, " +
+                             std::to_string(mesh.elements.size()) + " elements)");
   try
   {
     mesh.Validate();

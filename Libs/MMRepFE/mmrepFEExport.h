@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Internal helpers shared by the solver-format writers (.inp, .feb, .msh): set-name sanitizing,
 // node-order conversion from VTK and locale-independent number formatting. Not installed.
 #pragma once
@@ -21,11 +23,11 @@ namespace mmrep::detail
 // names NALL, EHEX, EWEDGE, ETET, ECABLE, ESOLID are reserved for the per-type groups.
 struct ExportNames
 {
-  std::vector<std::string> nodeSets;     // in mesh.nodeSets order
-  std::vector<std::string> muscleNodes;  // "muscle_<name>": the track nodes of each muscle
-  std::vector<std::string> elementSets;  // in mesh.elementSets order
-  std::array<std::string, 4> layers;     // "layer_epidermis", …, indexed by TissueLayer
-  std::vector<std::string> muscles;      // "muscle_<name>": the cables of each muscle
+  std::vector<std::string> nodeSets;    // in mesh.nodeSets order
+  std::vector<std::string> muscleNodes; // "muscle_<name>": the track nodes of each muscle
+  std::vector<std::string> elementSets; // in mesh.elementSets order
+  std::array<std::string, 4> layers;    // "layer_epidermis", …, indexed by TissueLayer
+  std::vector<std::string> muscles;     // "muscle_<name>": the cables of each muscle
 };
 ExportNames MakeExportNames(const FEMesh& mesh);
 

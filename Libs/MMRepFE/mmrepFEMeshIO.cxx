@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // File-level reading and writing of FE meshes: format dispatch by extension, VTK readers/writers
 // with their error reporting turned into exceptions (VTK prints errors instead of throwing), and
 // text writers for the solver formats (mmrepAbaqusWriter.cxx, mmrepFEBioWriter.cxx,
@@ -69,8 +71,7 @@ vtkStandardNewMacro(CapturingOutputWindow);
 class VTKErrors
 {
 public:
-  VTKErrors()
-    : lock_(Mutex())
+  VTKErrors() : lock_(Mutex())
   {
     previous_ = vtkOutputWindow::GetInstance();
     vtkOutputWindow::SetInstance(window_);
@@ -139,8 +140,7 @@ vtkSmartPointer<vtkUnstructuredGrid> ReadLegacy(const std::string& path, FileSpa
   return grid;
 }
 
-template <class Writer>
-void WriteVTK(Writer* writer, vtkUnstructuredGrid* grid, const std::string& path)
+template <class Writer> void WriteVTK(Writer* writer, vtkUnstructuredGrid* grid, const std::string& path)
 {
   VTKErrors errors;
   writer->SetFileName(path.c_str());
@@ -232,7 +232,8 @@ void WriteFEMesh(const FEMesh& mesh, const std::string& path, const std::string&
     f.erase(0, 1);
   const auto writable = WritableFEMeshExtensions();
   if (std::find(writable.begin(), writable.end(), "." + f) == writable.end())
-    throw std::runtime_error(path + ": unsupported mesh format '" + format + "' (writable: .vtu, .vtk, .inp, .feb, .msh)");
+    throw std::runtime_error(path + ": unsupported mesh format '" + format +
+                             "' (writable: .vtu, .vtk, .inp, .feb, .msh)");
   detail::CheckWritable(mesh, path);
   if (f == "vtu")
   {
@@ -246,7 +247,7 @@ void WriteFEMesh(const FEMesh& mesh, const std::string& path, const std::string&
   else if (f == "vtk")
   {
     vtkNew<vtkUnstructuredGridWriter> writer;
-    writer->SetFileTypeToBinary(); // exact doubles
+    writer->SetFileTypeToBinary();                                               // exact doubles
     writer->SetHeader((std::string("MMRep FE mesh ") + LPSHeaderTag()).c_str()); // Slicer's convention
     WriteVTK(writer.Get(), ToVTK(mesh), path);
   }

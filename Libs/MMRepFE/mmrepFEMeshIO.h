@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Reading and writing FE face models.
 //   .vtu  VTK XML unstructured grid: read and write, exact round trip of nodes, elements, layers,
 //         node/element sets, muscles (with embedding) and landmarks (field data is authoritative;
@@ -29,8 +31,8 @@ void WriteFEMesh(const FEMesh& mesh, const std::string& path); // format chosen 
 // to a temporary file name whose extension differs.
 void WriteFEMesh(const FEMesh& mesh, const std::string& path, const std::string& format);
 
-std::vector<std::string> ReadableFEMeshExtensions();  // {".vtu", ".vtk"}
-std::vector<std::string> WritableFEMeshExtensions();  // {".vtu", ".vtk", ".inp", ".feb", ".msh"}
+std::vector<std::string> ReadableFEMeshExtensions(); // {".vtu", ".vtk"}
+std::vector<std::string> WritableFEMeshExtensions(); // {".vtu", ".vtk", ".inp", ".feb", ".msh"}
 
 // Conversion to and from VTK (cell data "Layer", field data for sets, muscles and landmarks).
 vtkSmartPointer<vtkUnstructuredGrid> ToVTK(const FEMesh& mesh);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Gmsh mesh (.msh 4.1 ASCII). Gmsh attaches physical groups to model entities, not to elements, so
 // elements are grouped into one entity per distinct membership: a volume per (layer, element sets)
 // combination of solids, a curve per (muscles, element sets) combination of cables, and a point
@@ -24,10 +26,14 @@ int GmshType(ElementType type)
 {
   switch (type)
   {
-    case ElementType::Cable: return 1;
-    case ElementType::Tetrahedron: return 4;
-    case ElementType::Hexahedron: return 5;
-    case ElementType::Wedge: return 6;
+    case ElementType::Cable:
+      return 1;
+    case ElementType::Tetrahedron:
+      return 4;
+    case ElementType::Hexahedron:
+      return 5;
+    case ElementType::Wedge:
+      return 6;
   }
   return 0;
 }
@@ -161,8 +167,7 @@ void WriteGmsh(const FEMesh& mesh, std::ostream& out)
       }
     }
   }
-  std::stable_sort(entities.begin(), entities.end(),
-                   [](const Entity& a, const Entity& b) { return a.dim < b.dim; });
+  std::stable_sort(entities.begin(), entities.end(), [](const Entity& a, const Entity& b) { return a.dim < b.dim; });
 
   out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
   out << "$PhysicalNames\n" << groups.size() << "\n";

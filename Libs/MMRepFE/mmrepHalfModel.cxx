@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepHalfModel.h"
 
 #include "mmrepBoundaryFaces.h"
@@ -108,7 +110,8 @@ std::vector<Piece> LeftTrackPieces(const FEMesh& full, const std::vector<Side>& 
       const bool rightPoint = k < count && side[static_cast<std::size_t>(track.nodes[k])] == Side::Right;
       if (k > 0 && k < count)
       {
-        const Side a = side[static_cast<std::size_t>(track.nodes[k - 1])], b = side[static_cast<std::size_t>(track.nodes[k])];
+        const Side a = side[static_cast<std::size_t>(track.nodes[k - 1])],
+                   b = side[static_cast<std::size_t>(track.nodes[k])];
         if (static_cast<int>(a) * static_cast<int>(b) < 0)
           throw std::invalid_argument("muscle '" + name + "' crosses the symmetry plane between its points " +
                                       std::to_string(k - 1) + " and " + std::to_string(k) + " without a point on it");
@@ -271,7 +274,8 @@ FEMesh LeftHalfModel(const FEMesh& full, const HalfModelOptions& options)
     {
       Element e = full.elements[i];
       for (int k = 0; k < NodeCount(e.type); ++k)
-        e.nodes[static_cast<std::size_t>(k)] = nodeIndex[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])];
+        e.nodes[static_cast<std::size_t>(k)] =
+          nodeIndex[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])];
       elementIndex[i] = static_cast<std::int32_t>(half.elements.size());
       half.elements.push_back(e);
     }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The half-face model (paper §3.2; ArtiSynth's face simulates a symmetric half face): the patient's
 // left half of an FE face model that is exactly symmetric about its mid-sagittal plane, with the
 // plane's nodes carrying the symmetry boundary condition (displacement along the plane normal = 0).

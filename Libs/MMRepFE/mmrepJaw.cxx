@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Jaw: the mandible's rigid rotation about the condylar axis.
 #include "mmrepJaw.h"
 

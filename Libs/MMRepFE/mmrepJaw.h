@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The jaw of an FE face model: the bone attachment (node set `skull`) split into `maxilla` (held
 // fixed) and `mandible` (moves rigidly with the jaw), and the jaw's rotation axis through the two
 // condyles, stored as the two nodes of set `jawAxis` (left condyle first). Those two nodes belong to

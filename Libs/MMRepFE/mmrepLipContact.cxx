@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Mouth slit: closing and reopening it, its facing surfaces and the gap between them.
 #include "mmrepLipContact.h"
 
@@ -120,7 +122,8 @@ std::vector<LipContactFace> LipContactFaces(const FEMesh& mesh, bool upperLip)
       bool all = true;
       for (int c = 0; c < 4 && all; ++c)
       {
-        face.nodes[static_cast<std::size_t>(c)] = element.nodes[static_cast<std::size_t>(hexFaces[static_cast<std::size_t>(f)][static_cast<std::size_t>(c)])];
+        face.nodes[static_cast<std::size_t>(c)] =
+          element.nodes[static_cast<std::size_t>(hexFaces[static_cast<std::size_t>(f)][static_cast<std::size_t>(c)])];
         all = std::binary_search(contact.begin(), contact.end(), face.nodes[static_cast<std::size_t>(c)]);
       }
       if (all)
@@ -149,7 +152,8 @@ LipGap MeasureLipGap(const FEMesh& mesh, const std::vector<Point3>& displacement
     {
       vtkIdType ids[3];
       for (int c = 0; c < 3; ++c)
-        ids[c] = points->InsertNextPoint(at(f.nodes[static_cast<std::size_t>(tri[static_cast<std::size_t>(c)])]).data());
+        ids[c] =
+          points->InsertNextPoint(at(f.nodes[static_cast<std::size_t>(tri[static_cast<std::size_t>(c)])]).data());
       triangles->InsertNextCell(3, ids);
       const Point3 a = at(f.nodes[static_cast<std::size_t>(tri[0])]), b = at(f.nodes[static_cast<std::size_t>(tri[1])]),
                    c = at(f.nodes[static_cast<std::size_t>(tri[2])]);

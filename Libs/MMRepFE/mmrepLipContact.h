@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The mouth slit of an FE face model: the upper and lower lips are separate element sets whose
 // facing surfaces (node sets upperLipContact / lowerLipContact) coincide at rest, node for node,
 // except along the two corner lines, whose nodes both lips share. A registration moves coincident

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepResourceBudget.h"
 
 #include <sys/resource.h>
@@ -16,8 +18,8 @@ namespace mmrep
 std::uint64_t MemoryBudgetBytes()
 {
   const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
-  std::uint64_t budget = pages > 0 && pageSize > 0 ? static_cast<std::uint64_t>(pages) * pageSize / 2
-                                                   : std::uint64_t(1) << 32;
+  std::uint64_t budget =
+    pages > 0 && pageSize > 0 ? static_cast<std::uint64_t>(pages) * pageSize / 2 : std::uint64_t(1) << 32;
   rlimit limit{};
   for (int resource : {RLIMIT_AS, RLIMIT_DATA})
     if (::getrlimit(resource, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY && limit.rlim_cur / 2 < budget)
@@ -42,8 +44,9 @@ double CheckMemoryNeed(const std::string& what, const std::vector<double>& count
   {
     char text[160];
     const double gib = bytes / 1073741824.0;
-    std::snprintf(text, sizeof text, gib < 1000 ? ", %.3g GiB: more than the memory budget of %.3g GiB"
-                                                : ", %.3e GiB: more than the memory budget of %.3g GiB",
+    std::snprintf(text, sizeof text,
+                  gib < 1000 ? ", %.3g GiB: more than the memory budget of %.3g GiB"
+                             : ", %.3e GiB: more than the memory budget of %.3g GiB",
                   gib, budget / 1073741824.0);
     throw std::runtime_error(what + " " + shape + " " + items + text + " (half of the memory or of ulimit -v)");
   }
@@ -56,7 +59,8 @@ void CheckVTKXMLCounts(const std::string& path, double bytesPerPoint, double byt
   std::string head(1 << 16, '\0');
   file.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(file.gcount()));
-  if (const auto appended = head.find("<AppendedData"); appended != std::string::npos) head.resize(appended);
+  if (const auto appended = head.find("<AppendedData"); appended != std::string::npos)
+    head.resize(appended);
   double points = 0, cells = 0;
   static const std::regex count(R"re((NumberOf(?:Points|Cells|Polys|Strips|Lines|Verts))\s*=\s*"\s*([^"]*)")re");
   for (std::sregex_iterator it(head.begin(), head.end(), count), end; it != end; ++it)

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Memory budget: what an input's header or a parameter would make a module allocate is checked
 // before the allocation, so a 4 kB file declaring 2048^3 voxels, or a grid spacing of 1e-6 mm,
 // is refused at once with a line naming the file or parameter instead of exhausting the machine.

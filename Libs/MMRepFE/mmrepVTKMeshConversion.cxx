@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // FEMesh <-> vtkUnstructuredGrid. The grid holds the whole model so a .vtu/.vtk file round-trips
 // exactly; naming scheme (also in README.md), where <name> is the set/muscle name with every byte
 // outside [A-Za-z0-9_-] written as %XX (so '.', '%', spaces and non-ASCII survive any VTK format):
@@ -116,8 +118,8 @@ std::vector<std::int32_t> ReadInts(vtkAbstractArray* abstract)
     const double v = array->GetComponent(i, 0);
     if (!(v == std::floor(v)) || v < std::numeric_limits<std::int32_t>::min() ||
         v > std::numeric_limits<std::int32_t>::max())
-      throw std::runtime_error("data array '" + std::string(array->GetName()) + "' holds " +
-                               std::to_string(v) + ", not an index");
+      throw std::runtime_error("data array '" + std::string(array->GetName()) + "' holds " + std::to_string(v) +
+                               ", not an index");
     values[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(v);
   }
   return values;
@@ -167,6 +169,46 @@ void ReadElements(vtkUnstructuredGrid* grid, FEMesh& mesh)
                                  " (expected 0 to 3)");
       e.layer = static_cast<TissueLayer>(static_cast<int>(layer));
     }
+  }
+}
+
+// Points -> nodes (finite coordinates) and the mirror map.
+void ReadNodes(vtkUnstructuredGrid* grid, FEMesh& mesh)
+{
+  const vtkIdType pointCount = grid->GetNumberOfPoints();
+  if (pointCount > std::numeric_limits<std::int32_t>::max())
+    throw std::runtime_error("too many points (" + std::to_string(pointCount) + ")");
+  mesh.nodes.resize(static_cast<std::size_t>(pointCount));
+  for (vtkIdType i = 0; i < pointCount; ++i)
+  {
+    grid->GetPoint(i, mesh.nodes[static_cast<std::size_t>(i)].data());
+    if (!mesh.nodes[static_cast<std::size_t>(i)].allFinite())
+      throw std::runtime_error("point " + std::to_string(i) + " has a NaN or infinite coordinate");
+  }
+
+  if (vtkAbstractArray* mirror = grid->GetPointData()->GetAbstractArray(kMirrorArray.c_str()))
+  {
+    if (mirror->GetNumberOfTuples() != pointCount)
+      throw std::runtime_error("point data '" + kMirrorArray + "' must have one value per point");
+    mesh.mirror = ReadInts(mirror);
+  }
+}
+
+// The landmark arrays (names and positions, both or neither) -> landmarks.
+void ReadLandmarks(vtkStringArray* names, vtkAbstractArray* namesArray, vtkDataArray* landmarkPositions, FEMesh& mesh)
+{
+  if (!namesArray && !landmarkPositions)
+    return;
+  if (!names || !landmarkPositions || names->GetNumberOfValues() != landmarkPositions->GetNumberOfTuples())
+    throw std::runtime_error("landmark names and positions do not match");
+  for (vtkIdType k = 0; k < names->GetNumberOfValues(); ++k)
+  {
+    Landmark landmark;
+    landmark.name = names->GetValue(k);
+    landmarkPositions->GetTuple(k, landmark.position.data());
+    if (!landmark.position.allFinite())
+      throw std::runtime_error("landmark '" + landmark.name + "' has a NaN or infinite coordinate");
+    mesh.landmarks.push_back(landmark);
   }
 }
 
@@ -264,24 +306,7 @@ FEMesh FromVTK(vtkUnstructuredGrid* grid)
   if (!grid)
     throw std::runtime_error("no unstructured grid");
   FEMesh mesh;
-  const vtkIdType pointCount = grid->GetNumberOfPoints();
-  if (pointCount > std::numeric_limits<std::int32_t>::max())
-    throw std::runtime_error("too many points (" + std::to_string(pointCount) + ")");
-  mesh.nodes.resize(static_cast<std::size_t>(pointCount));
-  for (vtkIdType i = 0; i < pointCount; ++i)
-  {
-    grid->GetPoint(i, mesh.nodes[static_cast<std::size_t>(i)].data());
-    if (!mesh.nodes[static_cast<std::size_t>(i)].allFinite())
-      throw std::runtime_error("point " + std::to_string(i) + " has a NaN or infinite coordinate");
-  }
-
-  if (vtkAbstractArray* mirror = grid->GetPointData()->GetAbstractArray(kMirrorArray.c_str()))
-  {
-    if (mirror->GetNumberOfTuples() != pointCount)
-      throw std::runtime_error("point data '" + kMirrorArray + "' must have one value per point");
-    mesh.mirror = ReadInts(mirror);
-  }
-
+  ReadNodes(grid, mesh);
   ReadElements(grid, mesh);
 
   vtkFieldData* field = grid->GetFieldData();
@@ -358,21 +383,7 @@ FEMesh FromVTK(vtkUnstructuredGrid* grid)
     }
   }
 
-  if (landmarkNames || landmarkPositions)
-  {
-    auto* names = vtkStringArray::SafeDownCast(landmarkNames);
-    if (!names || !landmarkPositions || names->GetNumberOfValues() != landmarkPositions->GetNumberOfTuples())
-      throw std::runtime_error("landmark names and positions do not match");
-    for (vtkIdType k = 0; k < names->GetNumberOfValues(); ++k)
-    {
-      Landmark landmark;
-      landmark.name = names->GetValue(k);
-      landmarkPositions->GetTuple(k, landmark.position.data());
-      if (!landmark.position.allFinite())
-        throw std::runtime_error("landmark '" + landmark.name + "' has a NaN or infinite coordinate");
-      mesh.landmarks.push_back(landmark);
-    }
-  }
+  ReadLandmarks(vtkStringArray::SafeDownCast(landmarkNames), landmarkNames, landmarkPositions, mesh);
 
   try
   {

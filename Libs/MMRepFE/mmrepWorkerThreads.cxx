@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepWorkerThreads.h"
 
 #include <algorithm>
@@ -14,7 +16,8 @@ unsigned WorkerThreads(unsigned most)
   {
     char* end = nullptr;
     const long v = std::strtol(text, &end, 10);
-    if (end != text && *end == '\0' && v > 0) n = static_cast<unsigned>(std::min<long>(v, 1 << 16));
+    if (end != text && *end == '\0' && v > 0)
+      n = static_cast<unsigned>(std::min<long>(v, 1 << 16));
   }
   return std::max(1u, std::min(n, std::max(1u, most)));
 }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // DICOM series input/output (ITK's GDCM series reader and writer): the first series of a directory, sorted by
 // position; a CT written one file per slice, right-handed, with the geometry in the DICOM tags.
 #include "mmrepImageIO.h"
@@ -81,8 +83,8 @@ CTImage::Pointer RightHanded(const CTImage* image)
   const std::size_t sliceVoxels = size[0] * size[1];
   for (std::size_t k = 0; k < size[2]; ++k)
   {
-    std::memcpy(out->GetBufferPointer() + k * sliceVoxels,
-                image->GetBufferPointer() + (size[2] - 1 - k) * sliceVoxels, sliceVoxels * sizeof(short));
+    std::memcpy(out->GetBufferPointer() + k * sliceVoxels, image->GetBufferPointer() + (size[2] - 1 - k) * sliceVoxels,
+                sliceVoxels * sizeof(short));
   }
   return out;
 }
@@ -179,8 +181,7 @@ void WriteDicomSeries(const CTImage* input, const std::string& directory)
   const CTImage::DirectionType dir = image->GetDirection();
 
   // Row direction cosines (along i) then column direction cosines (along j).
-  const std::string orientation =
-    FormatDSList({ dir[0][0], dir[1][0], dir[2][0], dir[0][1], dir[1][1], dir[2][1] });
+  const std::string orientation = FormatDSList({dir[0][0], dir[1][0], dir[2][0], dir[0][1], dir[1][1], dir[2][1]});
 
   using Dictionary = itk::MetaDataDictionary;
   std::vector<Dictionary> dictionaries(size[2]);
@@ -201,12 +202,11 @@ void WriteDicomSeries(const CTImage* input, const std::string& directory)
     itk::EncapsulateMetaData<std::string>(d, "0010|0020", "MMRep");
     itk::EncapsulateMetaData<std::string>(d, "0020|0011", "1");
     itk::EncapsulateMetaData<std::string>(d, "0020|0013", std::to_string(k + 1));
-    itk::EncapsulateMetaData<std::string>(d, "0020|0032",
-                                          FormatDSList({ position[0], position[1], position[2] }));
+    itk::EncapsulateMetaData<std::string>(d, "0020|0032", FormatDSList({position[0], position[1], position[2]}));
     itk::EncapsulateMetaData<std::string>(d, "0020|0037", orientation);
     itk::EncapsulateMetaData<std::string>(d, "0020|1041", FormatDS(k * spacing[2]));
     // Pixel Spacing is row spacing (along j) then column spacing (along i).
-    itk::EncapsulateMetaData<std::string>(d, "0028|0030", FormatDSList({ spacing[1], spacing[0] }));
+    itk::EncapsulateMetaData<std::string>(d, "0028|0030", FormatDSList({spacing[1], spacing[0]}));
     itk::EncapsulateMetaData<std::string>(d, "0018|0050", FormatDS(spacing[2]));
     itk::EncapsulateMetaData<std::string>(d, "0018|0088", FormatDS(spacing[2]));
     // Identity rescale: stored values are the scanner values.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Header probe, memory budget, NIfTI data length and IO factory registration for the volume readers.
 #include "mmrepImageFileChecks.h"
 
@@ -28,8 +30,7 @@ namespace
 // ITK_USE_FILE registers the IO factories from every translation unit that includes
 // itkImageFileReader.h; this explicit, idempotent registration also covers builds where that
 // static initialisation is dropped (static library linked into a Slicer module library).
-template <typename TFactory>
-void RegisterIfMissing()
+template <typename TFactory> void RegisterIfMissing()
 {
   for (itk::ObjectFactoryBase* f : itk::ObjectFactoryBase::GetRegisteredFactories())
   {
@@ -133,9 +134,11 @@ void RequireNiftiData(const std::string& path, const itk::ImageIOBase* io)
     const std::size_t n = std::strlen(e);
     return lower.size() >= n && lower.compare(lower.size() - n, n, e) == 0;
   };
-  if (!endsWith(".nii") && !endsWith(".nii.gz")) return; // .hdr/.img pairs: the .img is read as it is
+  if (!endsWith(".nii") && !endsWith(".nii.gz"))
+    return;                                 // .hdr/.img pairs: the .img is read as it is
   gzFile file = gzopen(path.c_str(), "rb"); // reads uncompressed files as they are
-  if (file == nullptr) Fail(path, "cannot open");
+  if (file == nullptr)
+    Fail(path, "cannot open");
   std::vector<unsigned char> header(544, 0);
   const int headerBytes = gzread(file, header.data(), static_cast<unsigned>(header.size()));
   std::uint64_t total = headerBytes > 0 ? static_cast<std::uint64_t>(headerBytes) : 0;
@@ -145,7 +148,8 @@ void RequireNiftiData(const std::string& path, const itk::ImageIOBase* io)
   int error = Z_OK;
   std::string zlibError = gzerror(file, &error);
   gzclose(file);
-  if (const auto colon = zlibError.rfind(": "); colon != std::string::npos) zlibError.erase(0, colon + 2); // "path: why"
+  if (const auto colon = zlibError.rfind(": "); colon != std::string::npos)
+    zlibError.erase(0, colon + 2); // "path: why"
   if (error != Z_OK && error != Z_STREAM_END)
     Fail(path, "truncated or corrupt compressed data (" + zlibError + ")");
   // sizeof_hdr (348: NIfTI-1, vox_offset a float at 108; 540: NIfTI-2, an int64 at 168), either byte order.
@@ -153,7 +157,8 @@ void RequireNiftiData(const std::string& path, const itk::ImageIOBase* io)
     std::int32_t size;
     std::memcpy(&size, header.data(), 4);
     std::vector<unsigned char> b(header.begin() + static_cast<long>(at), header.begin() + static_cast<long>(at + n));
-    if (size != 348 && size != 540) std::reverse(b.begin(), b.end());
+    if (size != 348 && size != 540)
+      std::reverse(b.begin(), b.end());
     return b;
   };
   std::int32_t size;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Checks shared by MMRep's volume readers and writers (internal to MMRepIO): IO factory registration, the header
 // probe, the memory budget, finite voxels, complete NIfTI data, and MetaIO's reports on std::cerr.
 #pragma once
@@ -55,7 +57,9 @@ void RequireFiniteVoxels(const std::string& path, const TImage* image, double lo
       char where[128];
       std::snprintf(where, sizeof where, "voxel (%ld, %ld, %ld) is %s", static_cast<long>(index[0]),
                     static_cast<long>(index[1]), static_cast<long>(index[2]),
-                    std::isnan(v) ? "NaN" : std::isinf(v) ? (v > 0 ? "+Inf" : "-Inf") : "out of range");
+                    std::isnan(v)   ? "NaN"
+                    : std::isinf(v) ? (v > 0 ? "+Inf" : "-Inf")
+                                    : "out of range");
       Fail(path, std::string(where) + "; the volume must hold finite values" +
                    (std::isfinite(v) ? " within [" + std::to_string(static_cast<long long>(lowest)) + ", " +
                                          std::to_string(static_cast<long long>(highest)) + "]"
@@ -72,10 +76,7 @@ void RequireNiftiData(const std::string& path, const itk::ImageIOBase* io);
 class CaptureStandardError
 {
 public:
-  CaptureStandardError()
-    : previous_(std::cerr.rdbuf(text_.rdbuf()))
-  {
-  }
+  CaptureStandardError() : previous_(std::cerr.rdbuf(text_.rdbuf())) {}
   ~CaptureStandardError() { std::cerr.rdbuf(previous_); }
   CaptureStandardError(const CaptureStandardError&) = delete;
   CaptureStandardError& operator=(const CaptureStandardError&) = delete;

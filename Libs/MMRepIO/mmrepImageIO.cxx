@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Volume files through ITK's ImageIO factories (NRRD, MetaImage, NIfTI): checked reads, cast to our pixel types,
 // and writes that leave no partial file. DICOM series: mmrepDicomIO.cxx.
 #include "mmrepImageIO.h"
@@ -25,8 +27,7 @@ using imageio::EnsureImageIOFactories;
 using imageio::Fail;
 using namespace imageio;
 
-template <typename TImage>
-typename TImage::Pointer ReadWithIO(const std::string& path, itk::ImageIOBase* io)
+template <typename TImage> typename TImage::Pointer ReadWithIO(const std::string& path, itk::ImageIOBase* io)
 {
   auto reader = itk::ImageFileReader<TImage>::New();
   reader->SetFileName(path);
@@ -56,8 +57,7 @@ typename TImage::Pointer ReadWithIO(const std::string& path, itk::ImageIOBase* i
   return image;
 }
 
-template <typename TImage>
-typename TImage::Pointer ReadFile(const std::string& path)
+template <typename TImage> typename TImage::Pointer ReadFile(const std::string& path)
 {
   using Pixel = typename TImage::PixelType;
   using Value = typename itk::PixelTraits<Pixel>::ValueType;
@@ -93,8 +93,7 @@ typename TImage::Pointer ReadFile(const std::string& path)
   }
 }
 
-template <typename TImage>
-void WriteFile(const TImage* image, const std::string& path)
+template <typename TImage> void WriteFile(const TImage* image, const std::string& path)
 {
   EnsureImageIOFactories();
   if (image == nullptr)

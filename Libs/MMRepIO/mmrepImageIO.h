@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Volume input/output in physical LPS space: NRRD, MetaImage (.mha/.mhd), NIfTI (.nii, .nii.gz)
 // and DICOM series directories (ITK's GDCM series reader, first series found, sorted by position).
 #pragma once

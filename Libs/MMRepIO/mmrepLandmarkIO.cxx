@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Slicer point lists: markups JSON (.mrk.json, schema v1.0) and the legacy CSV format (.fcsv).
 #include "mmrepLandmarkIO.h"
 
@@ -117,8 +119,8 @@ void WriteMarkupsJson(const std::vector<Landmark>& landmarks, std::ostream& out,
     cp["label"] = landmarks[i].name;
     cp["description"] = "";
     cp["associatedNodeID"] = "";
-    cp["position"] = { p.x(), p.y(), p.z() };
-    cp["orientation"] = { -1.0, -0.0, -0.0, -0.0, -1.0, -0.0, 0.0, 0.0, 1.0 };
+    cp["position"] = {p.x(), p.y(), p.z()};
+    cp["orientation"] = {-1.0, -0.0, -0.0, -0.0, -1.0, -0.0, 0.0, 0.0, 1.0};
     cp["selected"] = true;
     cp["locked"] = false;
     cp["visibility"] = true;
@@ -138,7 +140,7 @@ void WriteMarkupsJson(const std::vector<Landmark>& landmarks, std::ostream& out,
 
   nlohmann::ordered_json doc;
   doc["@schema"] = kSchema;
-  doc["markups"] = nlohmann::ordered_json::array({ markup });
+  doc["markups"] = nlohmann::ordered_json::array({markup});
   out << doc.dump(4) << "\n";
 }
 
@@ -209,7 +211,7 @@ std::vector<Landmark> ReadFcsv(const std::string& path, std::istream& in)
 {
   // Files written before Slicer 4.11 have no (or a numeric) coordinate system and are RAS.
   CoordinateSystem system = CoordinateSystem::RAS;
-  std::vector<std::string> columns = { "id", "x", "y", "z", "ow", "ox", "oy", "oz", "vis", "sel", "lock", "label" };
+  std::vector<std::string> columns = {"id", "x", "y", "z", "ow", "ox", "oy", "oz", "vis", "sel", "lock", "label"};
   std::vector<Landmark> landmarks;
   std::string line;
   int lineNumber = 0;
@@ -272,7 +274,7 @@ std::vector<Landmark> ReadFcsv(const std::string& path, std::istream& in)
     }
     const std::vector<std::string> fields = SplitCsv(line);
     double xyz[3];
-    const int cols[3] = { cx, cy, cz };
+    const int cols[3] = {cx, cy, cz};
     for (int a = 0; a < 3; ++a)
     {
       std::size_t used = 0;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Triangle surfaces through VTK's readers and writers, chosen by file extension.
 #include "mmrepSurfaceIO.h"
 
@@ -64,7 +66,7 @@ void Watch(vtkAlgorithm* algorithm, ErrorCollector* collector)
 
 std::string SurfaceFormat(const std::string& path)
 {
-  for (const char* ext : { "vtp", "vtk", "stl", "ply", "obj" })
+  for (const char* ext : {"vtp", "vtk", "stl", "ply", "obj"})
   {
     if (io::Extension(path) == ext)
     {
@@ -81,7 +83,8 @@ void CheckPLYHeader(const std::string& path)
   std::ifstream in(path, std::ios::binary);
   std::string line, element;
   bool x = false, y = false, z = false;
-  if (!std::getline(in, line) || line.rfind("ply", 0) != 0) Fail(path, "not a PLY file (no 'ply' magic)");
+  if (!std::getline(in, line) || line.rfind("ply", 0) != 0)
+    Fail(path, "not a PLY file (no 'ply' magic)");
   for (int n = 0; std::getline(in, line) && n < 10000; ++n)
   {
     std::istringstream words(line);
@@ -89,10 +92,12 @@ void CheckPLYHeader(const std::string& path)
     words >> word;
     if (word == "end_header")
     {
-      if (!(x && y && z)) Fail(path, "the PLY header declares no vertex x, y and z properties");
+      if (!(x && y && z))
+        Fail(path, "the PLY header declares no vertex x, y and z properties");
       return;
     }
-    if (word == "element") words >> element;
+    if (word == "element")
+      words >> element;
     else if (word == "property" && element == "vertex" && (words >> type >> name))
     {
       x = x || name == "x";
@@ -166,8 +171,8 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path)
   if (!errors->message.empty() || reader->GetErrorCode() != vtkErrorCode::NoError)
   {
     const std::string why = !errors->message.empty()
-      ? errors->message
-      : vtkErrorCode::GetStringFromErrorCode(static_cast<int>(reader->GetErrorCode()));
+                              ? errors->message
+                              : vtkErrorCode::GetStringFromErrorCode(static_cast<int>(reader->GetErrorCode()));
     Fail(path, "cannot read surface: " + why);
   }
   vtkPolyData* output = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
@@ -281,8 +286,8 @@ void WriteSurface(vtkPolyData* surface, const std::string& path, const std::stri
   {
     vtksys::SystemTools::RemoveFile(path); // never leave a partial file behind
     const std::string why = !errors->message.empty()
-      ? errors->message
-      : vtkErrorCode::GetStringFromErrorCode(static_cast<int>(writer->GetErrorCode()));
+                              ? errors->message
+                              : vtkErrorCode::GetStringFromErrorCode(static_cast<int>(writer->GetErrorCode()));
     Fail(path, "cannot write surface: " + why);
   }
 }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepCTThresholds.h"
 
 #include <itkImageRegionConstIterator.h>
@@ -72,8 +74,7 @@ CTThresholds ChooseThresholds(const CTImage* image, ThresholdMode mode, double s
 {
   CTThresholds result;
   const bool explicitSkin = !std::isnan(skin), explicitBone = !std::isnan(bone);
-  const bool hu = mode == ThresholdMode::Hounsfield ||
-                  (mode == ThresholdMode::Automatic && LooksLikeHounsfield(image));
+  const bool hu = mode == ThresholdMode::Hounsfield || (mode == ThresholdMode::Automatic && LooksLikeHounsfield(image));
   if (explicitSkin && explicitBone)
   {
     result = {skin, bone, "explicit"};
@@ -96,8 +97,8 @@ CTThresholds ChooseThresholds(const CTImage* image, ThresholdMode mode, double s
     result.source += "+explicit";
   }
   if (!(result.bone > result.skin))
-    throw std::runtime_error("bone threshold (" + std::to_string(result.bone) +
-                             ") must be above the skin threshold (" + std::to_string(result.skin) + ")");
+    throw std::runtime_error("bone threshold (" + std::to_string(result.bone) + ") must be above the skin threshold (" +
+                             std::to_string(result.skin) + ")");
   return result;
 }
 

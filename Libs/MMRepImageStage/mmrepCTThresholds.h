@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Choice of the skin and bone thresholds of a head CT.
 //
 // CTs in Hounsfield units (air near -1000) get the usual fixed values (skin -300 HU, bone 300 HU).

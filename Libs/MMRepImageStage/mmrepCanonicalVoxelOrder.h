@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The same physical CT in one voxel order: a volume whose axes are a signed permutation of L, P, S
 // (any NRRD, NIfTI or DICOM series of an axis-aligned scan) is re-indexed so that i, j, k run along
 // +L, +P, +S, and its origin and spacing are rounded to 1e-6 mm. Two files holding the same voxels

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Trilinear value and gradient of a distance map at any LPS point, as the registration energy
 // needs them. Outside the map's box the value continues as (distance to the box) + (value at the
 // nearest box point), with the gradient pointing away from the box, so descent leads back in.

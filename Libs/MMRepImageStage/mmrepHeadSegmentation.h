@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Skin and bone masks of a head CT.
 //
 // Skin: threshold, a small opening to detach the table, head holder and cushions, the largest

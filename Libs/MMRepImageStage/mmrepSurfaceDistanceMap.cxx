@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepSurfaceDistanceMap.h"
 
 #include "itkSaitoToriwakiDistanceMapImageFilter.h"
@@ -137,7 +139,8 @@ std::array<double, 3> CheckDistanceMapGrid(const std::array<double, 6>& box, dou
                   parameter.c_str(), spacing, box[1] - box[0] + 2 * margin, box[3] - box[2] + 2 * margin,
                   box[5] - box[4] + 2 * margin, std::isfinite(voxels) ? voxels / 1e6 : 1e300,
                   std::max(spacing, std::cbrt((box[1] - box[0] + 2 * margin) * (box[3] - box[2] + 2 * margin) *
-                                              (box[5] - box[4] + 2 * margin) / most)) * 1.01);
+                                              (box[5] - box[4] + 2 * margin) / most)) *
+                    1.01);
     throw std::runtime_error(text);
   }
   return counts;
@@ -214,7 +217,8 @@ void ExactBand(const std::vector<Triangle>& triangles, const std::vector<Feature
       for (auto t : slabTriangles[s])
       {
         const auto& tr = triangles[t];
-        const Eigen::Vector3d lo = tr.a.cwiseMin(tr.b).cwiseMin(tr.c) - o3, hi = tr.a.cwiseMax(tr.b).cwiseMax(tr.c) - o3;
+        const Eigen::Vector3d lo = tr.a.cwiseMin(tr.b).cwiseMin(tr.c) - o3,
+                              hi = tr.a.cwiseMax(tr.b).cwiseMax(tr.c) - o3;
         std::size_t i0, i1, j0, j1, k0, k1;
         indexRange(lo.x(), hi.x(), nx, i0, i1);
         indexRange(lo.y(), hi.y(), ny, j0, j1);
@@ -313,7 +317,8 @@ FloatImage::Pointer ComputeSurfaceDistanceMap(vtkPolyData* surface, const Surfac
         const long qi = static_cast<long>(i) + std::lround(d[0] / h);
         const long qj = static_cast<long>(j) + std::lround(d[1] / h);
         const long qk = static_cast<long>(k) + std::lround(d[2] / h);
-        const std::size_t q = static_cast<std::size_t>(qi) + nx * (static_cast<std::size_t>(qj) + ny * static_cast<std::size_t>(qk));
+        const std::size_t q =
+          static_cast<std::size_t>(qi) + nx * (static_cast<std::size_t>(qj) + ny * static_cast<std::size_t>(qk));
         // The straight path to q does not cross the surface (q is the nearest band voxel), so p
         // lies on q's side.
         out[v] = static_cast<float>((sign.empty() ? 1 : sign[q]) *

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Distance map of a triangle surface on a regular grid, as the registration consumes it.
 //
 // Near the surface the map holds the exact Euclidean distance to the triangles (not to voxel
@@ -21,8 +23,8 @@ namespace mmrep
 
 struct SurfaceDistanceMapOptions
 {
-  double spacing = 1.5;  // mm, isotropic voxel size (the paper: 1.5 mm overall, 0.5 mm for the lips)
-  double margin = 10.0;  // mm added around the region on every side
+  double spacing = 1.5;   // mm, isotropic voxel size (the paper: 1.5 mm overall, 0.5 mm for the lips)
+  double margin = 10.0;   // mm added around the region on every side
   double exactBand = 2.0; // voxels: half-width of the band of exact distances
   // Negative inside a closed surface (sign from angle-weighted pseudo-normals, Bærentzen & Aanæs
   // 2005; far voxels take the sign of their nearest band voxel). A signed map interpolates

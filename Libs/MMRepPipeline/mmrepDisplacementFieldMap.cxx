@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepDisplacementFieldMap.h"
 #include "mmrepElasticTransform.h"
 
@@ -74,7 +76,8 @@ void Bounds(const std::vector<Point3>& points, Point3& lo, Point3& hi)
 void CheckDisplacementFieldSize(const std::vector<Point3>& points, double margin, double spacing,
                                 const std::string& parameter)
 {
-  if (points.empty()) return;
+  if (points.empty())
+    return;
   Point3 lo, hi;
   Bounds(points, lo, hi);
   char what[128];

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // A displacement-field image as a point map: x -> x + u(x), u linearly interpolated. This is how
 // a transform written by AtlasRegistration or FaceModelPipeline (u = T(x) - x sampled in atlas
 // space) moves atlas points to the subject.

@@ -1,4 +1,7 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepFaceAtlasPictures.h"
+#include "mmrepPointCloud.h"
 
 #include "mmrepBoundaryFaces.h"
 #include "mmrepFaceModelPictures.h"
@@ -26,28 +29,16 @@ vtkSmartPointer<vtkPolyData> SolidSurface(const FEMesh& mesh, const std::functio
   return BoundaryPolygons(part);
 }
 
-vtkSmartPointer<vtkPolyData> PointCloud(const std::vector<Point3>& positions)
-{
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  auto verts = vtkSmartPointer<vtkCellArray>::New();
-  for (const auto& p : positions)
-  {
-    const vtkIdType id = points->InsertNextPoint(p.data());
-    verts->InsertNextCell(1, &id);
-  }
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->SetPoints(points);
-  poly->SetVerts(verts);
-  return poly;
-}
-
 std::array<double, 3> LayerColor(int layer)
 {
   switch (layer)
   {
-    case 1: return {0.95, 0.80, 0.70};
-    case 2: return {0.85, 0.45, 0.40};
-    default: return {0.95, 0.85, 0.35};
+    case 1:
+      return {0.95, 0.80, 0.70};
+    case 2:
+      return {0.85, 0.45, 0.40};
+    default:
+      return {0.95, 0.85, 0.35};
   }
 }
 
@@ -59,8 +50,8 @@ void WriteLayersPicture(const FEMesh& mesh, const std::string& png)
   for (int layer = 1; layer <= 3; ++layer)
   {
     SnapshotLayer l;
-    l.surface = SolidSurface(
-      mesh, [&](std::size_t e) { return e < half && static_cast<int>(mesh.elements[e].layer) == layer; });
+    l.surface =
+      SolidSurface(mesh, [&](std::size_t e) { return e < half && static_cast<int>(mesh.elements[e].layer) == layer; });
     l.color = LayerColor(layer);
     layers.push_back(l);
   }

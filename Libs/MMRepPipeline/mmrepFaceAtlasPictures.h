@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // QC pictures of the face atlas (BuildFaceAtlas --pictures): its layers (left half and whole
 // face), its skin mesh with the lips nodes and landmarks, and its muscle tracks.
 #pragma once

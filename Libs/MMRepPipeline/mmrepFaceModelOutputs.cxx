@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The files of a speaker model run (see the header); the module FaceModelPipeline stages the directory.
 #include "mmrepFaceModelOutputs.h"
 
@@ -50,7 +52,9 @@ std::vector<std::pair<std::string, std::string>> OutputFiles(const FaceModelOutp
     files.emplace_back("muscles.png", "the speaker's inferred muscle tracks, front and left");
   }
   if (options.halfModel)
-    files.emplace_back("half-model.vtu", "the left half of the model, symmetry boundary in node set symmetryBoundary (also .inp, .feb, .msh)");
+    files.emplace_back(
+      "half-model.vtu",
+      "the left half of the model, symmetry boundary in node set symmetryBoundary (also .inp, .feb, .msh)");
   return files;
 }
 
@@ -125,8 +129,9 @@ std::string FaceModelSummary(const FaceModelResult& result)
   s << "Model: " << result.model.nodes.size() << " nodes, " << result.model.SolidElementCount()
     << " solid elements; fitted " << result.fitted << ": skin " << a.skinHalf.mean << " mm mean, skull "
     << a.skullHalf.mean << " mm mean, lips " << a.lipsHalf.max << " mm max (whole model: skin " << a.skin.mean
-    << ", skull " << a.skull.mean << ", lips max " << a.lips.max << "); control points " << ControlPointMeanError(result)
-    << " mm mean; min scaled Jacobian " << result.repair.minScaledJacobianAfter << "; " << result.totalSeconds << " s";
+    << ", skull " << a.skull.mean << ", lips max " << a.lips.max << "); control points "
+    << ControlPointMeanError(result) << " mm mean; min scaled Jacobian " << result.repair.minScaledJacobianAfter << "; "
+    << result.totalSeconds << " s";
   return s.str();
 }
 

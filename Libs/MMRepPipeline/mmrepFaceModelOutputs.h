@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The files of a speaker model run, written into one (staging) directory: the FE model in every format, the
 // optional half model, the displacement field atlas -> speaker, the surfaces, the landmarks, the pictures, the
 // report, the intermediates; and the run's one-line summary and failure message.
@@ -15,11 +17,11 @@ namespace mmrep
 
 struct FaceModelOutputOptions
 {
-  bool pictures = true;       // model-skin-error.png, lips.png, muscles.png (needs a display)
-  bool halfModel = false;     // half-model.vtu/.inp/.feb/.msh
-  bool intermediates = false; // registered.vtu, refined.vtu
+  bool pictures = true;          // model-skin-error.png, lips.png, muscles.png (needs a display)
+  bool halfModel = false;        // half-model.vtu/.inp/.feb/.msh
+  bool intermediates = false;    // registered.vtu, refined.vtu
   double transformSpacing = 2.0; // mm, grid of transform.nrrd
-  FaceModelReportInputs report; // its `files` are filled by WriteFaceModelOutputs
+  FaceModelReportInputs report;  // its `files` are filled by WriteFaceModelOutputs
 };
 
 // Writes every output into `directory`; `progress(f)` gets f in [0, 1] between the groups of files.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepFaceModelPictures.h"
 
 #include "mmrepSnapshot.h"
@@ -118,12 +120,18 @@ void WriteMusclesPicture(const FEMesh& model, vtkPolyData* skin, const std::stri
 {
   // One colour per muscle (both sides share it); names ending in _L/_R or Left/Right pair up by
   // their order, so colours cycle over the sorted names.
-  static const std::array<std::array<double, 3>, 13> palette = {{{0.90, 0.10, 0.10}, {0.10, 0.50, 0.90},
-                                                                 {0.10, 0.70, 0.20}, {0.95, 0.60, 0.05},
-                                                                 {0.60, 0.20, 0.80}, {0.00, 0.75, 0.75},
-                                                                 {0.85, 0.20, 0.60}, {0.55, 0.35, 0.15},
-                                                                 {0.40, 0.40, 0.40}, {0.75, 0.75, 0.10},
-                                                                 {0.10, 0.20, 0.55}, {1.00, 0.40, 0.40},
+  static const std::array<std::array<double, 3>, 13> palette = {{{0.90, 0.10, 0.10},
+                                                                 {0.10, 0.50, 0.90},
+                                                                 {0.10, 0.70, 0.20},
+                                                                 {0.95, 0.60, 0.05},
+                                                                 {0.60, 0.20, 0.80},
+                                                                 {0.00, 0.75, 0.75},
+                                                                 {0.85, 0.20, 0.60},
+                                                                 {0.55, 0.35, 0.15},
+                                                                 {0.40, 0.40, 0.40},
+                                                                 {0.75, 0.75, 0.10},
+                                                                 {0.10, 0.20, 0.55},
+                                                                 {1.00, 0.40, 0.40},
                                                                  {0.30, 0.90, 0.50}}};
   std::vector<vtkSmartPointer<vtkPolyData>> tracks;
   std::vector<SnapshotLayer> layers;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // QC pictures of a speaker model (PNG, VTK off-screen; need an X display, e.g. xvfb-run -a):
 //   model-skin-error.png  front and left views of the model's skin over the speaker's skin, coloured
 //                         by each node's distance to the speaker's skin triangles;
@@ -17,7 +19,6 @@ std::vector<double> NodeSurfaceDistances(const FEMesh& mesh, const std::string& 
 
 void WriteModelErrorPicture(const FaceModelResult& result, const std::string& pngPath);
 void WriteLipsPicture(const FaceModelResult& result, const std::string& pngPath);
-void WriteMusclesPicture(const FEMesh& model, vtkPolyData* skin, const std::string& pngPath,
-                         const std::string& title);
+void WriteMusclesPicture(const FEMesh& model, vtkPolyData* skin, const std::string& pngPath, const std::string& title);
 
 } // namespace mmrep

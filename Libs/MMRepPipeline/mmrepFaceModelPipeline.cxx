@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepFaceModelPipeline.h"
 #include "mmrepFieldOfView.h"
 
@@ -48,12 +50,12 @@ ModelAccuracy Measure(const std::string& state, const FEMesh& mesh, vtkPolyData*
           ids.push_back(id);
     return ids;
   };
-  a.skin = MeasureSurfaceError(mesh.nodes, set(sets.skinSet, false), skin);
-  a.skull = MeasureSurfaceError(mesh.nodes, set(sets.skullSet, false), skull);
-  a.lips = MeasureSurfaceError(mesh.nodes, set(sets.lipsSet, false), skin);
-  a.skinHalf = MeasureSurfaceError(mesh.nodes, set(sets.skinSet, true), skin);
-  a.skullHalf = MeasureSurfaceError(mesh.nodes, set(sets.skullSet, true), skull);
-  a.lipsHalf = MeasureSurfaceError(mesh.nodes, set(sets.lipsSet, true), skin);
+  a.skin = MeasureSurfaceDistance(mesh.nodes, set(sets.skinSet, false), skin);
+  a.skull = MeasureSurfaceDistance(mesh.nodes, set(sets.skullSet, false), skull);
+  a.lips = MeasureSurfaceDistance(mesh.nodes, set(sets.lipsSet, false), skin);
+  a.skinHalf = MeasureSurfaceDistance(mesh.nodes, set(sets.skinSet, true), skin);
+  a.skullHalf = MeasureSurfaceDistance(mesh.nodes, set(sets.skullSet, true), skull);
+  a.lipsHalf = MeasureSurfaceDistance(mesh.nodes, set(sets.lipsSet, true), skin);
   for (std::size_t i = 0; i < names.size(); ++i)
   {
     double e = std::numeric_limits<double>::quiet_NaN();
@@ -251,8 +253,8 @@ FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& c
   result.registration = std::move(r.transform);
   result.registrationReport = std::move(r.report);
   result.registered = r.mesh;
-  result.accuracy.push_back(Measure("R", r.mesh, result.skin, result.skull, result.controlNames,
-                                    result.controlTargets, options.registration, fittedHalf));
+  result.accuracy.push_back(Measure("R", r.mesh, result.skin, result.skull, result.controlNames, result.controlTargets,
+                                    options.registration, fittedHalf));
   finish("registration", t);
 
   // 4. Lips refinement Q.
@@ -294,7 +296,8 @@ FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& c
 
   // 6. Muscles through Q∘R, embedded in the repaired mesh.
   t = Clock::now();
-  result.muscles = InferMuscles(atlas, [&](const Point3& x) { return result.AtlasToSubject(x); }, result.model);
+  result.muscles = InferMuscles(
+    atlas, [&](const Point3& x) { return result.AtlasToSubject(x); }, result.model);
   result.accuracy.push_back(Measure("repaired", result.model, result.skin, result.skull, result.controlNames,
                                     result.controlTargets, options.registration, fittedHalf));
   finish("muscles", t);

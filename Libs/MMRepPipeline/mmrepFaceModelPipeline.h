@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The speaker model pipeline (paper §3, whole): CT -> skin and skull surfaces -> symmetry plane
 // -> elastic registration R of the atlas (distance maps inside) -> lips refinement Q -> repair
 // -> muscles carried through Q∘R. One call, usable from C++; the FaceModelPipeline module wraps it
@@ -37,8 +39,8 @@ struct FaceModelOptions
   bool refine = true;                    // Q over the lips
   LocalRefinementOptions refinement;     // Q (plane, symmetry and progress set by the pipeline)
   double repairThreshold = 0.3;          // scaled Jacobian every element must reach
-  int repairSweeps = 40; // a model that needs more is better re-registered than ground on
-  double fieldOfViewMargin = 5; // mm the CT must extend past the face region (mmrepFieldOfView.h)
+  int repairSweeps = 40;                 // a model that needs more is better re-registered than ground on
+  double fieldOfViewMargin = 5;          // mm the CT must extend past the face region (mmrepFieldOfView.h)
   // A CT that misses part of the face region is refused unless this is set: the model is then built
   // all the same, with the missing part in FaceModelResult::fieldOfViewMissing (its shape there is
   // the atlas's, pulled towards whatever skin the CT holds).
@@ -56,29 +58,29 @@ struct StageTime
 // Errors of one state of the mesh against the subject surfaces, measured on the mesh itself.
 struct ModelAccuracy
 {
-  std::string state; // "R", "Q∘R", "repaired"
-  SurfaceErrorStatistics skin, skull, lips;             // whole model
-  SurfaceErrorStatistics skinHalf, skullHalf, lipsHalf; // the fitted (left) half and the plane
-  std::vector<double> controlErrors; // per control point, order of FaceModelResult::controlNames
+  std::string state;                             // "R", "Q∘R", "repaired"
+  SurfaceDistance skin, skull, lips;             // whole model
+  SurfaceDistance skinHalf, skullHalf, lipsHalf; // the fitted (left) half and the plane
+  std::vector<double> controlErrors;             // per control point, order of FaceModelResult::controlNames
 };
 
 struct FaceModelResult
 {
-  FEMesh model;                                   // the speaker model: repaired, muscles inferred
-  FEMesh registered, refined;                     // the atlas after R and after Q∘R (for inspection)
-  vtkSmartPointer<vtkPolyData> skin, skull;       // the subject surfaces (LPS mm)
+  FEMesh model;                             // the speaker model: repaired, muscles inferred
+  FEMesh registered, refined;               // the atlas after R and after Q∘R (for inspection)
+  vtkSmartPointer<vtkPolyData> skin, skull; // the subject surfaces (LPS mm)
   CTThresholds thresholds;
-  Plane plane;                                    // the subject's mid-sagittal plane
-  double planeResidual = 0;                       // mm, RMS of the mirrored skin
-  ElasticTransform registration, refinement;      // R and Q (Q is identity when not refined)
-  RegistrationReport registrationReport;          // R's stages as RegisterAtlas reports them
-  quality::QualitySummary qualityAfterQ;          // before the repair
+  Plane plane;                               // the subject's mid-sagittal plane
+  double planeResidual = 0;                  // mm, RMS of the mirrored skin
+  ElasticTransform registration, refinement; // R and Q (Q is identity when not refined)
+  RegistrationReport registrationReport;     // R's stages as RegisterAtlas reports them
+  quality::QualitySummary qualityAfterQ;     // before the repair
   RepairReport repair;
   MuscleInferenceReport muscles;
-  std::vector<std::string> controlNames;          // atlas landmark names = subject control points
-  std::vector<Point3> controlTargets;             // the subject's control points, same order
-  std::string fieldOfViewMissing;                 // the part of the face the CT misses (partial model), or empty
-  std::vector<ModelAccuracy> accuracy;            // after R, after Q∘R, after repair
+  std::vector<std::string> controlNames; // atlas landmark names = subject control points
+  std::vector<Point3> controlTargets;    // the subject's control points, same order
+  std::string fieldOfViewMissing;        // the part of the face the CT misses (partial model), or empty
+  std::vector<ModelAccuracy> accuracy;   // after R, after Q∘R, after repair
   // Which part of the atlas was fitted to the speaker: "left half" (half-face: the right half is its
   // mirror image), "both halves, averaged" or "whole face (asymmetric)".
   std::string fitted;

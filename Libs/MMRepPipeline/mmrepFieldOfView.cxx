@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepFieldOfView.h"
 
 #include "mmrepSimilarityTransform.h"
@@ -45,7 +47,8 @@ bool FaceRegionBounds(const FEMesh& atlas, const std::string& faceSet, const std
                       std::array<double, 6>& box)
 {
   SimilarityTransform toCT;
-  if (!PlaceAtlas(atlas, targets, toCT)) return false;
+  if (!PlaceAtlas(atlas, targets, toCT))
+    return false;
   box = {1e300, -1e300, 1e300, -1e300, 1e300, -1e300};
   for (const auto node : FaceSet(atlas, faceSet))
   {
@@ -63,7 +66,8 @@ std::string MissingFieldOfView(const CTImage* ct, const FEMesh& atlas, const std
                                const std::vector<Point3>& targets, double margin)
 {
   SimilarityTransform toCT;
-  if (!PlaceAtlas(atlas, targets, toCT)) return {};
+  if (!PlaceAtlas(atlas, targets, toCT))
+    return {};
   const auto& set = FaceSet(atlas, faceSet);
 
   // How far (mm) the face goes past each end of each CT axis, margin included.
@@ -87,15 +91,15 @@ std::string MissingFieldOfView(const CTImage* ct, const FEMesh& atlas, const std
   }
 
   // Name each short side by the anatomical direction its CT axis points to in LPS.
-  static const char* const names[3][2] = {{"right cheek", "left cheek"},
-                                          {"front of the face", "back of the face"},
-                                          {"chin", "brow"}};
+  static const char* const names[3][2] = {
+    {"right cheek", "left cheek"}, {"front of the face", "back of the face"}, {"chin", "brow"}};
   std::string missing;
   for (unsigned a = 0; a < 3; ++a)
   {
     unsigned lps = 0;
     for (unsigned k = 1; k < 3; ++k)
-      if (std::abs(ct->GetDirection()[k][a]) > std::abs(ct->GetDirection()[lps][a])) lps = k;
+      if (std::abs(ct->GetDirection()[k][a]) > std::abs(ct->GetDirection()[lps][a]))
+        lps = k;
     const bool flipped = ct->GetDirection()[lps][a] < 0;
     for (unsigned end = 0; end < 2; ++end)
       if (beyond[a][end] > 0)

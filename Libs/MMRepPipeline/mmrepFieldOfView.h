@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Field of view: does the CT cover the face the model is built for? A CT of the cranium only
 // (no mouth, no chin) would otherwise give a "speaker model" whose lower face is the atlas's.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepMuscleInference.h"
 
 #include <vtkCell.h>
@@ -114,8 +116,8 @@ private:
   vtkNew<vtkStaticCellLocator> locator_;
   vtkNew<vtkGenericCell> cell_;
   vtkNew<vtkIdList> ids_;
-  std::vector<vtkIdType> cellOf_;        // element -> cell (-1 for cables)
-  std::vector<std::int32_t> elementOf_;  // cell -> element
+  std::vector<vtkIdType> cellOf_;       // element -> cell (-1 for cables)
+  std::vector<std::int32_t> elementOf_; // cell -> element
 };
 
 } // namespace
@@ -126,11 +128,10 @@ MuscleInferenceReport InferMuscles(const FEMesh& atlas, const PointMap& atlasToS
     throw std::invalid_argument("muscle inference: the atlas has no muscle tracks");
   if (atlas.nodes.size() != subject.nodes.size() || atlas.elements.size() != subject.elements.size() ||
       atlas.muscles.size() != subject.muscles.size())
-    throw std::invalid_argument("muscle inference: the subject mesh does not have the atlas's topology (" +
-                                std::to_string(subject.nodes.size()) + " nodes, " +
-                                std::to_string(subject.elements.size()) + " elements vs the atlas's " +
-                                std::to_string(atlas.nodes.size()) + ", " + std::to_string(atlas.elements.size()) +
-                                ")");
+    throw std::invalid_argument(
+      "muscle inference: the subject mesh does not have the atlas's topology (" + std::to_string(subject.nodes.size()) +
+      " nodes, " + std::to_string(subject.elements.size()) + " elements vs the atlas's " +
+      std::to_string(atlas.nodes.size()) + ", " + std::to_string(atlas.elements.size()) + ")");
   for (const auto& [name, track] : atlas.muscles)
   {
     const auto it = subject.muscles.find(name);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Muscle inference (paper §3.4): the atlas's muscle tracks carried into the subject through the
 // registration transform (Q∘R, atlas -> subject). Each track keeps its structure (points in order,
 // insertion first, its cable elements); only positions and the embedding change: every track
@@ -29,8 +31,8 @@ struct MuscleInferenceReport
   // keep their transformed position and are embedded in the nearest element, whose parametric
   // coordinates then lie slightly outside [0, 1]; the largest such distance is reported.
   std::size_t outside = 0;
-  double maxOutsideDistance = 0; // mm
-  std::size_t changedElement = 0; // points now in another element than in the atlas
+  double maxOutsideDistance = 0;           // mm
+  std::size_t changedElement = 0;          // points now in another element than in the atlas
   std::vector<MuscleInsertion> insertions; // one per muscle, in name order
 };
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Pipeline object for the registration stage: atlas FE mesh (input 0, vtkUnstructuredGrid as
 // mmrep::ToVTK makes it), subject skin (input 1) and skull (input 2) surfaces, control points ->
 // the registered atlas R(atlas) (output). As the FaceModelPipeline module does: the subject's

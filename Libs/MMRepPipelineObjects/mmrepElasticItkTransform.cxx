@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // mmrep::ElasticTransform as an itk::Transform (see the header).
 #include "mmrepElasticItkTransform.h"
 
@@ -5,7 +7,10 @@ namespace mmrep
 {
 namespace
 {
-Eigen::Vector3d ToEigen(const itk::Point<double, 3>& p) { return {p[0], p[1], p[2]}; }
+Eigen::Vector3d ToEigen(const itk::Point<double, 3>& p)
+{
+  return {p[0], p[1], p[2]};
+}
 } // namespace
 
 void ElasticItkTransform::SetElasticTransforms(std::vector<ElasticTransform> transforms)

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The elastic registration R and the lips refinement Q (mmrep::ElasticTransform, applied in the
 // order given: {R, Q} is Q∘R) as an itk::Transform<double, 3, 3>, so that ITK pipelines use them as
 // any ITK transform: in itk::CompositeTransform, itk::TransformMeshFilter (atlas meshes to the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Progress, abort and errors of the pipeline objects (see the header).
 #include "mmrepFilterExecution.h"
 
@@ -85,7 +87,8 @@ int ExecuteFilter(vtkAlgorithm* filter, FilterStatus& status, const std::functio
 
 vtkDataObject* RequiredInput(vtkAlgorithm* filter, int port, const char* what)
 {
-  vtkDataObject* input = filter->GetNumberOfInputConnections(port) > 0 ? filter->GetExecutive()->GetInputData(port, 0) : nullptr;
+  vtkDataObject* input =
+    filter->GetNumberOfInputConnections(port) > 0 ? filter->GetExecutive()->GetInputData(port, 0) : nullptr;
   if (input == nullptr || input->GetNumberOfElements(vtkDataObject::POINT) == 0)
     throw std::invalid_argument(std::string(what) + " (input " + std::to_string(port) +
                                 ") is missing or empty (an upstream filter failed or was aborted)");

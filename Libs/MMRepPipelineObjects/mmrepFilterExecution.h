@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // What every MMRep pipeline object does around the free function it wraps: the function's progress
 // becomes the filter's ProgressEvents (vtkAlgorithm::UpdateProgress), the filter's AbortExecute flag
 // is polled at every progress step (so an abort ends the run inside the long loops, as Slicer's
@@ -43,4 +45,7 @@ vtkDataObject* RequiredInput(vtkAlgorithm* filter, int port, const char* what);
       this->Modified();                                                                                                \
     }                                                                                                                  \
   }                                                                                                                    \
-  Type Get##Name() const { return field; }
+  Type Get##Name() const                                                                                               \
+  {                                                                                                                    \
+    return field;                                                                                                      \
+  }

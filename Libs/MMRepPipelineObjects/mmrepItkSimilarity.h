@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The project's similarity (mmrep::SimilarityTransform: the registration's initial alignment fitted
 // to the control points) as an itk::Similarity3DTransform, for ITK pipelines and transform files.
 #pragma once

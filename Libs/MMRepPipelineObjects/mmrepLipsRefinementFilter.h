@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Pipeline object for the lips refinement Q: registered mesh (input 0, an AtlasRegistrationFilter's
 // output: its field data holds the subject plane and symmetry mode) and the subject skin (input 1)
 // -> Q∘R(atlas) (output, same field data). Q's options as the FaceModelPipeline module sets them

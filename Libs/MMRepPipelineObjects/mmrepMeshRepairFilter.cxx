@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // RepairMesh as a vtkUnstructuredGridAlgorithm (see the header).
 #include "mmrepMeshRepairFilter.h"
 #include "mmrepFEMeshIO.h"
@@ -39,9 +41,11 @@ int MeshRepairFilter::RequestData(vtkInformation*, vtkInformationVector**, vtkIn
     options.maximumSweeps = sweeps_;
     vtkSmartPointer<vtkPolyData> skin, skull;
     if (this->GetNumberOfInputConnections(1) > 0)
-      options.skinSurface = skin = CropSurfaceAround(vtkPolyData::SafeDownCast(RequiredInput(this, 1, "skin")), mesh, margin_);
+      options.skinSurface = skin =
+        CropSurfaceAround(vtkPolyData::SafeDownCast(RequiredInput(this, 1, "skin")), mesh, margin_);
     if (this->GetNumberOfInputConnections(2) > 0)
-      options.skullSurface = skull = CropSurfaceAround(vtkPolyData::SafeDownCast(RequiredInput(this, 2, "skull")), mesh, margin_);
+      options.skullSurface = skull =
+        CropSurfaceAround(vtkPolyData::SafeDownCast(RequiredInput(this, 2, "skull")), mesh, margin_);
     const bool hasSymmetry = input->GetFieldData()->GetAbstractArray("SymmetryPlane") != nullptr;
     PipelineSymmetry symmetry;
     if (hasSymmetry)

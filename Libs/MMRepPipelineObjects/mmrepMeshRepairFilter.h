@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Pipeline object for the repair: FE mesh (input 0; its field data's symmetry plane, when the mode
 // is symmetric, is kept as the FaceModelPipeline module keeps it), subject skin (input 1) and skull
 // (input 2, both optional: without them the mesh's own boundary) -> the repaired mesh (output,

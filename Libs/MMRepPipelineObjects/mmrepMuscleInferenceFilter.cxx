@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // InferMuscles as a vtkUnstructuredGridAlgorithm (see the header).
 #include "mmrepMuscleInferenceFilter.h"
 #include "mmrepFEMeshIO.h"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Pipeline object for the muscle inference: the atlas (input 0) and the subject mesh with the
 // atlas's topology (input 1, e.g. a MeshRepairFilter's output) -> the subject mesh with the atlas
 // muscle tracks carried through an atlas -> subject itk::Transform and embedded again (output,

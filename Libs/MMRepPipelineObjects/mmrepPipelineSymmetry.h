@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The subject's symmetry as it flows down the pipeline objects: the registration estimates the
 // mid-sagittal plane and fits in one symmetry mode ("half-face", "averaged", "full"); the refinement
 // and the repair need both. They travel in the mesh's field data (arrays "SymmetryPlane": point

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // CT -> skin and skull surfaces as a VTK source (see the header).
 #include "mmrepSubjectSurfacesFilter.h"
 

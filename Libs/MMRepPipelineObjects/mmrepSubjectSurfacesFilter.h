@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Pipeline object for the image stage: the speaker's CT (an ITK image, typically an
 // itk::ImageFileReader's output) -> skin surface (output 0) and skull surface (output 1), LPS mm,
 // as ExtractSubjectSurfaces makes them for the FaceModelPipeline module.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Hexahedron quality (Verdict definitions as in VTK 9.1), see mmrepHexQuality.h.
 #include "mmrepHexQuality.h"
 
@@ -23,13 +25,31 @@ Frame CornerFrame(const HexNodes& p, int i)
 }
 
 // Principal axes at the centre (4x the parametric derivatives for xi in [-1, 1]); Verdict's "efg".
-Point3 Axis1(const HexNodes& p) { return p[1] + p[2] + p[5] + p[6] - p[0] - p[3] - p[4] - p[7]; }
-Point3 Axis2(const HexNodes& p) { return p[2] + p[3] + p[6] + p[7] - p[0] - p[1] - p[4] - p[5]; }
-Point3 Axis3(const HexNodes& p) { return p[4] + p[5] + p[6] + p[7] - p[0] - p[1] - p[2] - p[3]; }
+Point3 Axis1(const HexNodes& p)
+{
+  return p[1] + p[2] + p[5] + p[6] - p[0] - p[3] - p[4] - p[7];
+}
+Point3 Axis2(const HexNodes& p)
+{
+  return p[2] + p[3] + p[6] + p[7] - p[0] - p[1] - p[4] - p[5];
+}
+Point3 Axis3(const HexNodes& p)
+{
+  return p[4] + p[5] + p[6] + p[7] - p[0] - p[1] - p[2] - p[3];
+}
 // Cross-derivatives (bilinear terms) used by the taper.
-Point3 Axis12(const HexNodes& p) { return p[0] + p[2] + p[4] + p[6] - p[1] - p[3] - p[5] - p[7]; }
-Point3 Axis13(const HexNodes& p) { return p[0] + p[3] + p[5] + p[6] - p[1] - p[2] - p[4] - p[7]; }
-Point3 Axis23(const HexNodes& p) { return p[0] + p[1] + p[6] + p[7] - p[2] - p[3] - p[4] - p[5]; }
+Point3 Axis12(const HexNodes& p)
+{
+  return p[0] + p[2] + p[4] + p[6] - p[1] - p[3] - p[5] - p[7];
+}
+Point3 Axis13(const HexNodes& p)
+{
+  return p[0] + p[3] + p[5] + p[6] - p[1] - p[2] - p[4] - p[7];
+}
+Point3 Axis23(const HexNodes& p)
+{
+  return p[0] + p[1] + p[6] + p[7] - p[2] - p[3] - p[4] - p[5];
+}
 
 // Frobenius condition number of a corner frame; kVerdictMax when not positively oriented.
 double Condition(const Frame& f)

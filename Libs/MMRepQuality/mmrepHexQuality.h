@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Quality measures of a trilinear hexahedron given its 8 nodes in VTK order (vtkHexahedron:
 // 0-1-2-3 bottom face, 4-5-6-7 above them). Definitions and degenerate-cell rules are Verdict's as
 // shipped with VTK 9.1, so every value equals vtkMeshQuality::Hex<Measure>(cell).
@@ -29,11 +31,11 @@ double HexDiagonal(const HexNodes& p);       // min diagonal / max diagonal
 // Verdict's hex edge ratio as in VTK 9.1: the longest of the first six edges (0-1, 1-2, 2-3, 3-0,
 // 4-5, 5-6) over the shortest of all twelve. This reproduces a Verdict quirk on purpose.
 double HexEdgeRatio(const HexNodes& p);
-double HexMaxEdgeRatio(const HexNodes& p);        // max ratio of principal-axis lengths
-double HexMaxAspectFrobenius(const HexNodes& p);  // max corner Frobenius condition number / 3
-double HexMedAspectFrobenius(const HexNodes& p);  // mean corner Frobenius condition number / 3
-double HexCondition(const HexNodes& p);           // = HexMaxAspectFrobenius
-double HexOddy(const HexNodes& p);                // max Oddy distortion over centre and corners
-double HexVolume(const HexNodes& p);              // VTK 9.1: the centre Jacobian (exact for parallelepipeds)
+double HexMaxEdgeRatio(const HexNodes& p);       // max ratio of principal-axis lengths
+double HexMaxAspectFrobenius(const HexNodes& p); // max corner Frobenius condition number / 3
+double HexMedAspectFrobenius(const HexNodes& p); // mean corner Frobenius condition number / 3
+double HexCondition(const HexNodes& p);          // = HexMaxAspectFrobenius
+double HexOddy(const HexNodes& p);               // max Oddy distortion over centre and corners
+double HexVolume(const HexNodes& p);             // VTK 9.1: the centre Jacobian (exact for parallelepipeds)
 
 } // namespace mmrep::quality

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Per-mesh quality evaluation and summary, see mmrepMeshQuality.h.
 #include "mmrepMeshQuality.h"
 #include "mmrepWorkerThreads.h"
@@ -18,8 +20,7 @@ namespace
 {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-template <std::size_t N>
-std::array<Point3, N> Nodes(const FEMesh& mesh, const Element& e)
+template <std::size_t N> std::array<Point3, N> Nodes(const FEMesh& mesh, const Element& e)
 {
   std::array<Point3, N> p;
   for (std::size_t i = 0; i < N; ++i)
@@ -31,22 +32,38 @@ double Hex(const HexNodes& p, Measure m)
 {
   switch (m)
   {
-    case Measure::Jacobian: return HexJacobian(p);
-    case Measure::ScaledJacobian: return HexScaledJacobian(p);
-    case Measure::Shape: return HexShape(p);
-    case Measure::EdgeRatio: return HexEdgeRatio(p);
-    case Measure::MaxAspectFrobenius: return HexMaxAspectFrobenius(p);
-    case Measure::MedAspectFrobenius: return HexMedAspectFrobenius(p);
-    case Measure::MaxEdgeRatio: return HexMaxEdgeRatio(p);
-    case Measure::Skew: return HexSkew(p);
-    case Measure::Taper: return HexTaper(p);
-    case Measure::Stretch: return HexStretch(p);
-    case Measure::Diagonal: return HexDiagonal(p);
-    case Measure::Shear: return HexShear(p);
-    case Measure::Oddy: return HexOddy(p);
-    case Measure::Condition: return HexCondition(p);
-    case Measure::Volume: return HexVolume(p);
-    default: return kNaN;
+    case Measure::Jacobian:
+      return HexJacobian(p);
+    case Measure::ScaledJacobian:
+      return HexScaledJacobian(p);
+    case Measure::Shape:
+      return HexShape(p);
+    case Measure::EdgeRatio:
+      return HexEdgeRatio(p);
+    case Measure::MaxAspectFrobenius:
+      return HexMaxAspectFrobenius(p);
+    case Measure::MedAspectFrobenius:
+      return HexMedAspectFrobenius(p);
+    case Measure::MaxEdgeRatio:
+      return HexMaxEdgeRatio(p);
+    case Measure::Skew:
+      return HexSkew(p);
+    case Measure::Taper:
+      return HexTaper(p);
+    case Measure::Stretch:
+      return HexStretch(p);
+    case Measure::Diagonal:
+      return HexDiagonal(p);
+    case Measure::Shear:
+      return HexShear(p);
+    case Measure::Oddy:
+      return HexOddy(p);
+    case Measure::Condition:
+      return HexCondition(p);
+    case Measure::Volume:
+      return HexVolume(p);
+    default:
+      return kNaN;
   }
 }
 
@@ -54,20 +71,34 @@ double Tet(const TetNodes& p, Measure m)
 {
   switch (m)
   {
-    case Measure::Jacobian: return TetJacobian(p);
-    case Measure::ScaledJacobian: return TetScaledJacobian(p);
-    case Measure::Shape: return TetShape(p);
-    case Measure::EdgeRatio: return TetEdgeRatio(p);
-    case Measure::Condition: return TetCondition(p);
-    case Measure::AspectRatio: return TetAspectRatio(p);
-    case Measure::AspectFrobenius: return TetAspectFrobenius(p);
-    case Measure::AspectBeta: return TetAspectBeta(p);
-    case Measure::AspectGamma: return TetAspectGamma(p);
-    case Measure::RadiusRatio: return TetRadiusRatio(p);
-    case Measure::MinAngle: return TetMinAngle(p);
-    case Measure::CollapseRatio: return TetCollapseRatio(p);
-    case Measure::Volume: return TetVolume(p);
-    default: return kNaN;
+    case Measure::Jacobian:
+      return TetJacobian(p);
+    case Measure::ScaledJacobian:
+      return TetScaledJacobian(p);
+    case Measure::Shape:
+      return TetShape(p);
+    case Measure::EdgeRatio:
+      return TetEdgeRatio(p);
+    case Measure::Condition:
+      return TetCondition(p);
+    case Measure::AspectRatio:
+      return TetAspectRatio(p);
+    case Measure::AspectFrobenius:
+      return TetAspectFrobenius(p);
+    case Measure::AspectBeta:
+      return TetAspectBeta(p);
+    case Measure::AspectGamma:
+      return TetAspectGamma(p);
+    case Measure::RadiusRatio:
+      return TetRadiusRatio(p);
+    case Measure::MinAngle:
+      return TetMinAngle(p);
+    case Measure::CollapseRatio:
+      return TetCollapseRatio(p);
+    case Measure::Volume:
+      return TetVolume(p);
+    default:
+      return kNaN;
   }
 }
 
@@ -75,11 +106,16 @@ double Wedge(const WedgeNodes& p, Measure m)
 {
   switch (m)
   {
-    case Measure::Jacobian: return WedgeJacobian(p);
-    case Measure::ScaledJacobian: return WedgeScaledJacobian(p);
-    case Measure::Shape: return WedgeShape(p);
-    case Measure::EdgeRatio: return WedgeEdgeRatio(p);
-    default: return kNaN;
+    case Measure::Jacobian:
+      return WedgeJacobian(p);
+    case Measure::ScaledJacobian:
+      return WedgeScaledJacobian(p);
+    case Measure::Shape:
+      return WedgeShape(p);
+    case Measure::EdgeRatio:
+      return WedgeEdgeRatio(p);
+    default:
+      return kNaN;
   }
 }
 
@@ -113,28 +149,50 @@ const char* MeasureName(Measure measure)
 {
   switch (measure)
   {
-    case Measure::Jacobian: return "Jacobian";
-    case Measure::ScaledJacobian: return "ScaledJacobian";
-    case Measure::Shape: return "Shape";
-    case Measure::EdgeRatio: return "EdgeRatio";
-    case Measure::MaxAspectFrobenius: return "MaxAspectFrobenius";
-    case Measure::MedAspectFrobenius: return "MedAspectFrobenius";
-    case Measure::MaxEdgeRatio: return "MaxEdgeRatio";
-    case Measure::Skew: return "Skew";
-    case Measure::Taper: return "Taper";
-    case Measure::Stretch: return "Stretch";
-    case Measure::Diagonal: return "Diagonal";
-    case Measure::Shear: return "Shear";
-    case Measure::Oddy: return "Oddy";
-    case Measure::Condition: return "Condition";
-    case Measure::AspectRatio: return "AspectRatio";
-    case Measure::AspectFrobenius: return "AspectFrobenius";
-    case Measure::AspectBeta: return "AspectBeta";
-    case Measure::AspectGamma: return "AspectGamma";
-    case Measure::RadiusRatio: return "RadiusRatio";
-    case Measure::MinAngle: return "MinAngle";
-    case Measure::CollapseRatio: return "CollapseRatio";
-    case Measure::Volume: return "Volume";
+    case Measure::Jacobian:
+      return "Jacobian";
+    case Measure::ScaledJacobian:
+      return "ScaledJacobian";
+    case Measure::Shape:
+      return "Shape";
+    case Measure::EdgeRatio:
+      return "EdgeRatio";
+    case Measure::MaxAspectFrobenius:
+      return "MaxAspectFrobenius";
+    case Measure::MedAspectFrobenius:
+      return "MedAspectFrobenius";
+    case Measure::MaxEdgeRatio:
+      return "MaxEdgeRatio";
+    case Measure::Skew:
+      return "Skew";
+    case Measure::Taper:
+      return "Taper";
+    case Measure::Stretch:
+      return "Stretch";
+    case Measure::Diagonal:
+      return "Diagonal";
+    case Measure::Shear:
+      return "Shear";
+    case Measure::Oddy:
+      return "Oddy";
+    case Measure::Condition:
+      return "Condition";
+    case Measure::AspectRatio:
+      return "AspectRatio";
+    case Measure::AspectFrobenius:
+      return "AspectFrobenius";
+    case Measure::AspectBeta:
+      return "AspectBeta";
+    case Measure::AspectGamma:
+      return "AspectGamma";
+    case Measure::RadiusRatio:
+      return "RadiusRatio";
+    case Measure::MinAngle:
+      return "MinAngle";
+    case Measure::CollapseRatio:
+      return "CollapseRatio";
+    case Measure::Volume:
+      return "Volume";
   }
   return "Unknown";
 }
@@ -154,7 +212,8 @@ bool IsDefined(Measure measure, ElementType type)
       return !std::isnan(Wedge(WedgeNodes{Point3(0, 0, 0), Point3(0, 1, 0), Point3(1, 0, 0), Point3(0, 0, 1),
                                           Point3(0, 1, 1), Point3(1, 0, 1)},
                                measure));
-    default: return false;
+    default:
+      return false;
   }
 }
 
@@ -163,10 +222,14 @@ double ElementQuality(const FEMesh& mesh, std::size_t element, Measure measure)
   const Element& e = mesh.elements.at(element);
   switch (e.type)
   {
-    case ElementType::Hexahedron: return Hex(Nodes<8>(mesh, e), measure);
-    case ElementType::Tetrahedron: return Tet(Nodes<4>(mesh, e), measure);
-    case ElementType::Wedge: return Wedge(Nodes<6>(mesh, e), measure);
-    default: return kNaN;
+    case ElementType::Hexahedron:
+      return Hex(Nodes<8>(mesh, e), measure);
+    case ElementType::Tetrahedron:
+      return Tet(Nodes<4>(mesh, e), measure);
+    case ElementType::Wedge:
+      return Wedge(Nodes<6>(mesh, e), measure);
+    default:
+      return kNaN;
   }
 }
 
@@ -185,8 +248,10 @@ std::vector<double> CornerJacobians(const FEMesh& mesh, std::size_t element)
       const auto j = WedgeCornerJacobians(Nodes<6>(mesh, e));
       return {j.begin(), j.end()};
     }
-    case ElementType::Tetrahedron: return std::vector<double>(4, TetJacobian(Nodes<4>(mesh, e)));
-    default: return {};
+    case ElementType::Tetrahedron:
+      return std::vector<double>(4, TetJacobian(Nodes<4>(mesh, e)));
+    default:
+      return {};
   }
 }
 

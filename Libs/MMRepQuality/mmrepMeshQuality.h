@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Element quality over a whole FE mesh: every measure of mmrepHex/Tet/WedgeQuality.h evaluated per
 // element (in parallel, with results independent of the thread count), corner Jacobians for the
 // repair stage, and a summary (min / mean / max, count below a threshold, inverted elements).
@@ -68,11 +70,11 @@ std::vector<double> ComputeQuality(const FEMesh& mesh, Measure measure, const Qu
 
 struct QualitySummary
 {
-  std::size_t count = 0;          // elements where the measure is defined (solid elements)
-  std::size_t degenerate = 0;     // of which flagged ±kVerdictMax by Verdict (e.g. a zero-length edge)
+  std::size_t count = 0;             // elements where the measure is defined (solid elements)
+  std::size_t degenerate = 0;        // of which flagged ±kVerdictMax by Verdict (e.g. a zero-length edge)
   double min = 0, mean = 0, max = 0; // over the defined, non-flagged values; NaN when there are none
-  std::size_t belowThreshold = 0; // value < threshold, degenerate elements included
-  std::size_t inverted = 0;       // elements whose Jacobian measure is negative
+  std::size_t belowThreshold = 0;    // value < threshold, degenerate elements included
+  std::size_t inverted = 0;          // elements whose Jacobian measure is negative
 };
 
 // Summary of per-element values (one per element, NaN = undefined) given the per-element Jacobian

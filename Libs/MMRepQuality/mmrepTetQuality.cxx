@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Tetrahedron quality (Verdict definitions as in VTK 9.1), see mmrepTetQuality.h.
 #include "mmrepTetQuality.h"
 
@@ -11,10 +13,7 @@ namespace
 struct Sides
 {
   Point3 s[6];
-  explicit Sides(const TetNodes& p)
-    : s{p[1] - p[0], p[2] - p[1], p[0] - p[2], p[3] - p[0], p[3] - p[1], p[3] - p[2]}
-  {
-  }
+  explicit Sides(const TetNodes& p) : s{p[1] - p[0], p[2] - p[1], p[0] - p[2], p[3] - p[0], p[3] - p[1], p[3] - p[2]} {}
 };
 
 // |circumradius numerator| x (sum of face areas) / (108 V^2): the radius ratio before the sign test.
@@ -22,8 +21,8 @@ double RadiusRatioTerm(const TetNodes& p, double volume)
 {
   const Sides t(p);
   const Point3* s = t.s;
-  const Point3 numerator = Length2(s[3]) * Cross(s[2], s[0]) + Length2(s[2]) * Cross(s[3], s[0]) +
-                           Length2(s[0]) * Cross(s[3], s[2]);
+  const Point3 numerator =
+    Length2(s[3]) * Cross(s[2], s[0]) + Length2(s[2]) * Cross(s[3], s[0]) + Length2(s[0]) * Cross(s[3], s[2]);
   const double areaSum =
     (Length(Cross(s[2], s[0])) + Length(Cross(s[3], s[0])) + Length(Cross(s[4], s[1])) + Length(Cross(s[3], s[2]))) *
     0.5;
@@ -48,10 +47,9 @@ double TetScaledJacobian(const TetNodes& p)
   const Point3* s = t.s;
   const double jacobi = Dot(s[3], Cross(s[2], s[0]));
   // Product of the squared lengths of the three edges at each node.
-  const double products[4] = {Length2(s[0]) * Length2(s[2]) * Length2(s[3]),
-                              Length2(s[0]) * Length2(s[1]) * Length2(s[4]),
-                              Length2(s[1]) * Length2(s[2]) * Length2(s[5]),
-                              Length2(s[3]) * Length2(s[4]) * Length2(s[5])};
+  const double products[4] = {
+    Length2(s[0]) * Length2(s[2]) * Length2(s[3]), Length2(s[0]) * Length2(s[1]) * Length2(s[4]),
+    Length2(s[1]) * Length2(s[2]) * Length2(s[5]), Length2(s[3]) * Length2(s[4]) * Length2(s[5])};
   int which = 0;
   for (int i = 1; i < 4; ++i)
     if (products[i] > products[which])
@@ -75,7 +73,8 @@ double TetShape(const TetNodes& p)
     return 0.0;
   const double num = 3 * std::pow(sqrt2 * jacobian, twoThirds);
   const Point3 minusE2 = -e2;
-  const double den = 1.5 * (Dot(e0, e0) + Dot(e2, e2) + Dot(e3, e3)) - (Dot(e0, minusE2) + Dot(minusE2, e3) + Dot(e3, e0));
+  const double den =
+    1.5 * (Dot(e0, e0) + Dot(e2, e2) + Dot(e3, e3)) - (Dot(e0, minusE2) + Dot(minusE2, e3) + Dot(e3, e0));
   if (den < kVerdictMin)
     return 0.0;
   return std::max(num / den, 0.);
@@ -143,8 +142,8 @@ double TetAspectGamma(const TetNodes& p)
   const double volume = std::abs(TetVolume(p));
   if (volume < kVerdictMin)
     return kVerdictMax;
-  const double sum = Length2(t.s[0]) + Length2(t.s[1]) + Length2(t.s[2]) + Length2(t.s[3]) + Length2(t.s[4]) +
-                     Length2(t.s[5]);
+  const double sum =
+    Length2(t.s[0]) + Length2(t.s[1]) + Length2(t.s[2]) + Length2(t.s[3]) + Length2(t.s[4]) + Length2(t.s[5]);
   const double srms = std::sqrt(sum / 6.0);
   return std::pow(srms, 3) / (8.48528137423857 * volume);
 }

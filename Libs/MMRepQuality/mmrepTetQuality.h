@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Quality measures of a linear tetrahedron given its 4 nodes in VTK order (vtkTetra: node 3 on the
 // side where (1-0) x (2-0) points). Definitions and degenerate-cell rules are Verdict's as shipped
 // with VTK 9.1, so every value equals vtkMeshQuality::Tet<Measure>(cell).

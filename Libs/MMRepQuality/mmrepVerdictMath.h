@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Arithmetic shared by the quality measures, written to round exactly like Verdict (VTK's
 // ThirdParty/verdict) so that results agree with vtkMeshQuality to the last bits: same vector
 // operation order, same comparison-based min/max (NaN handling differs from std::min/max), and

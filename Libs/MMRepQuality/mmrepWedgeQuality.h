@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Quality measures of a linear wedge (triangular prism) given its 6 nodes in VTK order (vtkWedge:
 // triangle 0-1-2 whose right-hand normal points away from triangle 3-4-5, node 3 above 0, 4 above 1,
 // 5 above 2). VTK 9.1's vtkMeshQuality has no wedge measures; these follow the wedge definitions of

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Paired-point alignment: input checks here, the closed-form solution is Eigen's umeyama().
 #include "mmrepSimilarityTransform.h"
 
@@ -46,8 +48,8 @@ double SimilarityTransform::RotationAngle() const
 namespace
 {
 
-SimilarityTransform Estimate(const std::vector<Eigen::Vector3d>& source,
-                             const std::vector<Eigen::Vector3d>& target, bool withScale)
+SimilarityTransform Estimate(const std::vector<Eigen::Vector3d>& source, const std::vector<Eigen::Vector3d>& target,
+                             bool withScale)
 {
   if (source.size() != target.size())
     throw std::invalid_argument("paired-point alignment: " + std::to_string(source.size()) + " source points but " +

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Least-squares similarity (rotation, isotropic scale, translation) and rigid transforms from
 // paired points (Umeyama 1991, through Eigen::umeyama).
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Mid-sagittal plane by mirror-and-register (Chang & Park 2008), see mmrepSymmetryPlane.h.
 //
 // The mirrored samples M(p) are rigidly registered onto the surface by minimising the squared
@@ -47,7 +49,8 @@ std::vector<Eigen::Vector3d> GridSamples(vtkPolyData* skin, std::size_t target)
 {
   double b[6];
   skin->GetBounds(b);
-  const double area = 2 * ((b[1] - b[0]) * (b[3] - b[2]) + (b[1] - b[0]) * (b[5] - b[4]) + (b[3] - b[2]) * (b[5] - b[4]));
+  const double area =
+    2 * ((b[1] - b[0]) * (b[3] - b[2]) + (b[1] - b[0]) * (b[5] - b[4]) + (b[3] - b[2]) * (b[5] - b[4]));
   const double cell = std::max(1e-6, std::sqrt(area / static_cast<double>(std::max<std::size_t>(target, 1))));
   using Key = std::tuple<long, long, long>;
   std::map<Key, std::pair<double, Eigen::Vector3d>> best; // key -> (distance² to the centre, vertex)
@@ -58,7 +61,8 @@ std::vector<Eigen::Vector3d> GridSamples(vtkPolyData* skin, std::size_t target)
     const Eigen::Vector3d p(q[0], q[1], q[2]);
     if (!p.allFinite())
       throw std::runtime_error("symmetry plane: the skin surface has a non-finite point");
-    const Key key{static_cast<long>(std::floor((p.x() - b[0]) / cell)), static_cast<long>(std::floor((p.y() - b[2]) / cell)),
+    const Key key{static_cast<long>(std::floor((p.x() - b[0]) / cell)),
+                  static_cast<long>(std::floor((p.y() - b[2]) / cell)),
                   static_cast<long>(std::floor((p.z() - b[4]) / cell))};
     const Eigen::Vector3d centre(b[0] + (std::get<0>(key) + 0.5) * cell, b[2] + (std::get<1>(key) + 0.5) * cell,
                                  b[4] + (std::get<2>(key) + 0.5) * cell);
@@ -88,12 +92,11 @@ struct RegistrationState
 };
 
 // Rigid registration of the moving points onto the zero level of a distance (map or exact).
-template <class Distance>
-class MirrorRegistration
+template <class Distance> class MirrorRegistration
 {
 public:
   MirrorRegistration(const Distance& map, std::vector<Eigen::Vector3d> moving, double trim)
-    : map_(map), moving_(std::move(moving)), trim_(trim)
+      : map_(map), moving_(std::move(moving)), trim_(trim)
   {
   }
 

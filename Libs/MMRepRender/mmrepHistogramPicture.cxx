@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepHistogramPicture.h"
 
 #include "mmrepSnapshot.h"
@@ -65,7 +67,9 @@ void AddPanel(vtkRenderer* renderer, const HistogramPanel& panel, double thresho
   vtkNew<vtkCellArray> quads, lines;
   std::vector<std::array<unsigned char, 3>> quadColors, lineColors;
   auto X = [&](double value) { return kLeft + (value + 1) / 2 * (kRight - kLeft); };
-  auto Y = [&](double count) { return kBottom + count / double(std::max<std::size_t>(maxCount, 1)) * (kTop - kBottom); };
+  auto Y = [&](double count) {
+    return kBottom + count / double(std::max<std::size_t>(maxCount, 1)) * (kTop - kBottom);
+  };
   auto point = [&](double x, double y) { return points->InsertNextPoint(x, y, 0); };
   for (int b = 0; b < bins; ++b)
   {
@@ -76,7 +80,8 @@ void AddPanel(vtkRenderer* renderer, const HistogramPanel& panel, double thresho
                             point(X(lo), Y(double(counts[b])))};
     quads->InsertNextCell(4, q);
     const bool below = lo < threshold;
-    quadColors.push_back(below ? std::array<unsigned char, 3>{215, 60, 50} : std::array<unsigned char, 3>{60, 110, 200});
+    quadColors.push_back(below ? std::array<unsigned char, 3>{215, 60, 50}
+                               : std::array<unsigned char, 3>{60, 110, 200});
   }
   // Axes, ticks and the threshold line, black; the threshold line grey.
   const auto line = [&](double x0, double y0, double x1, double y1, unsigned char grey) {
@@ -124,14 +129,15 @@ void AddPanel(vtkRenderer* renderer, const HistogramPanel& panel, double thresho
   for (const double v : panel.values)
     below += (!std::isnan(v) && v < threshold) ? 1 : 0;
   char title[256];
-  std::snprintf(title, sizeof title, "%s: %zu elements, %zu below %.2f", panel.title.c_str(), panel.values.size(), below,
-                threshold);
+  std::snprintf(title, sizeof title, "%s: %zu elements, %zu below %.2f", panel.title.c_str(), panel.values.size(),
+                below, threshold);
   AddText(renderer, title, 0.5, 0.92, 16, VTK_TEXT_CENTERED);
   AddText(renderer, "scaled Jacobian", 0.5, 0.01, 14, VTK_TEXT_CENTERED);
 }
 } // namespace
 
-void WriteHistogramPNG(const std::vector<HistogramPanel>& panels, double threshold, const std::string& pngPath, int bins)
+void WriteHistogramPNG(const std::vector<HistogramPanel>& panels, double threshold, const std::string& pngPath,
+                       int bins)
 {
   RequireDisplay(pngPath);
   if (panels.empty())

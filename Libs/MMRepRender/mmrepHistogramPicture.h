@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // PNG of scaled-Jacobian histograms, e.g. before and after a repair (VTK, off-screen; needs X).
 #pragma once
 

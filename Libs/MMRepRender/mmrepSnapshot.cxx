@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepSnapshot.h"
 
 #include <vtkActor.h>
@@ -34,10 +36,18 @@ void ViewVectors(View v, double dir[3], double up[3])
   dir[0] = dir[1] = dir[2] = 0;
   switch (v)
   {
-    case View::Anterior: dir[1] = -1; break; // anterior is -P
-    case View::Posterior: dir[1] = 1; break;
-    case View::Left: dir[0] = 1; break;      // left is +L
-    case View::Right: dir[0] = -1; break;
+    case View::Anterior:
+      dir[1] = -1;
+      break; // anterior is -P
+    case View::Posterior:
+      dir[1] = 1;
+      break;
+    case View::Left:
+      dir[0] = 1;
+      break; // left is +L
+    case View::Right:
+      dir[0] = -1;
+      break;
     case View::Superior:
       dir[2] = 1, up[1] = -1, up[2] = 0; // nose up in the picture
       break;
@@ -51,12 +61,18 @@ const char* ViewName(View v)
 {
   switch (v)
   {
-    case View::Anterior: return "anterior";
-    case View::Posterior: return "posterior";
-    case View::Left: return "left";
-    case View::Right: return "right";
-    case View::Superior: return "superior";
-    case View::Inferior: return "inferior";
+    case View::Anterior:
+      return "anterior";
+    case View::Posterior:
+      return "posterior";
+    case View::Left:
+      return "left";
+    case View::Right:
+      return "right";
+    case View::Superior:
+      return "superior";
+    case View::Inferior:
+      return "inferior";
   }
   return "";
 }
@@ -187,7 +203,8 @@ void WriteSnapshot(const std::vector<SnapshotLayer>& layers, const SnapshotOptio
       renderer->ResetCamera();
 
     vtkNew<vtkTextActor> label;
-    label->SetInput((i == 0 && !o.title.empty() ? o.title + " - " : std::string()).append(ViewName(o.views[i])).c_str());
+    label->SetInput(
+      (i == 0 && !o.title.empty() ? o.title + " - " : std::string()).append(ViewName(o.views[i])).c_str());
     label->GetTextProperty()->SetColor(0, 0, 0);
     label->GetTextProperty()->SetFontSize(16);
     label->SetDisplayPosition(8, o.viewHeight - 24);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Off-screen QC pictures with VTK: one PNG holding several views (anterior, left, …) of layered
 // surfaces, optionally coloured by a point-data array with a scalar bar. Views are anatomical:
 // LPS axes, superior up.
@@ -8,6 +10,7 @@
 
 #include <vtkPolyData.h>
 #include <vtkRenderWindow.h>
+#include <vtkSmartPointer.h>
 
 #include <array>
 #include <string>
@@ -18,8 +21,8 @@ namespace mmrep
 
 enum class View
 {
-  Anterior,     // looking at the face
-  Left,         // the patient's left side
+  Anterior, // looking at the face
+  Left,     // the patient's left side
   Right,
   Superior,
   Inferior,
@@ -28,14 +31,14 @@ enum class View
 
 struct SnapshotLayer
 {
-  vtkPolyData* surface = nullptr;
+  vtkSmartPointer<vtkPolyData> surface; // held: a layer may be given a temporary
   std::array<double, 3> color{0.9, 0.75, 0.65};
   double opacity = 1.0;
-  std::string scalars;                 // point-data array to colour by (empty: plain colour)
-  std::array<double, 2> range{0, 1};   // colour range for `scalars`
-  std::string scalarTitle;             // scalar bar title
+  std::string scalars;               // point-data array to colour by (empty: plain colour)
+  std::array<double, 2> range{0, 1}; // colour range for `scalars`
+  std::string scalarTitle;           // scalar bar title
   bool wireframe = false;
-  double pointSize = 0;                // > 0: draw vertices as spheres of this size (pixels)
+  double pointSize = 0; // > 0: draw vertices as spheres of this size (pixels)
   double lineWidth = 1;
 };
 

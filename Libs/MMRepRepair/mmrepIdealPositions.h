@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Geometric targets of a node in the repair's local search (mmrepMeshRepair.cxx): where the node
 // would make its elements well shaped.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Jacobian-based mesh repair, see mmrepMeshRepair.h.
 //
 // Each element's quality is its Verdict scaled Jacobian (as vtkMeshQuality computes it), with
@@ -31,7 +33,7 @@ namespace
 {
 constexpr double kDegenerate = -2.0; // quality of a Verdict-flagged (collapsed) element
 constexpr double kMargin = 0.05;     // elements are improved up to threshold + margin
-constexpr double kRingMargin = 0.4; // elements around a stuck one are improved up to threshold + this
+constexpr double kRingMargin = 0.4;  // elements around a stuck one are improved up to threshold + this
 constexpr double kEqual = 1e-12;     // qualities closer than this compare equal
 
 bool IsSolid(ElementType t)
@@ -43,7 +45,7 @@ class Repairer
 {
 public:
   Repairer(FEMesh& mesh, const RepairOptions& options)
-    : mesh_(mesh), options_(options), adjacency_(mesh), constraints_(mesh, adjacency_, options)
+      : mesh_(mesh), options_(options), adjacency_(mesh), constraints_(mesh, adjacency_, options)
   {
     threshold_ = options.scaledJacobianThreshold;
     cap_ = std::min(1.0, threshold_ + kMargin);
@@ -66,7 +68,7 @@ public:
     {
       bool regularity, surfaceAllowed, ring;
     };
-    const Stage plan[] = {{true, false, false}, {true, true, false}, {true, true, true},
+    const Stage plan[] = {{true, false, false},  {true, true, false},  {true, true, true},
                           {false, false, false}, {false, true, false}, {false, true, true}};
     const int stages = 6;
     // The plan is repeated while a full pass still fixes elements.
@@ -77,26 +79,27 @@ public:
       if (bad == 0 || bad >= badBefore)
         break;
       badBefore = bad;
-    for (int stage = 0; stage < stages; ++stage)
-    {
-      const bool regularity = plan[stage].regularity, surfaceAllowed = plan[stage].surfaceAllowed;
-      ring_ = plan[stage].ring;
-      // A stage ends when a sweep neither fixes an element nor raises the bad elements noticeably.
-      Progress last = Measure(regularity);
-      for (int sweep = 0; sweep < options_.maximumSweeps && last.bad > 0; ++sweep)
+      for (int stage = 0; stage < stages; ++stage)
       {
-        const bool changed = Sweep(regularity, surfaceAllowed);
-        const Progress now = Measure(regularity);
+        const bool regularity = plan[stage].regularity, surfaceAllowed = plan[stage].surfaceAllowed;
+        ring_ = plan[stage].ring;
+        // A stage ends when a sweep neither fixes an element nor raises the bad elements noticeably.
+        Progress last = Measure(regularity);
+        for (int sweep = 0; sweep < options_.maximumSweeps && last.bad > 0; ++sweep)
+        {
+          const bool changed = Sweep(regularity, surfaceAllowed);
+          const Progress now = Measure(regularity);
+          if (options_.progress)
+            options_.progress(
+              std::min(1.0, (pass * stages + stage + double(sweep + 1) / options_.maximumSweeps) / stages));
+          const bool progressed = now.bad < last.bad || now.score > last.score + 1e-3 * double(last.bad);
+          last = now;
+          if (!changed || !progressed)
+            break;
+        }
         if (options_.progress)
-          options_.progress(std::min(1.0, (pass * stages + stage + double(sweep + 1) / options_.maximumSweeps) / stages));
-        const bool progressed = now.bad < last.bad || now.score > last.score + 1e-3 * double(last.bad);
-        last = now;
-        if (!changed || !progressed)
-          break;
+          options_.progress(std::min(1.0, double(pass * stages + stage + 1) / stages));
       }
-      if (options_.progress)
-        options_.progress(std::min(1.0, double(pass * stages + stage + 1) / stages));
-    }
     }
     FollowEmbeddings(mesh_, original);
 
@@ -109,7 +112,6 @@ public:
       }
     report.symmetricPairs = constraints_.MirrorPairs();
   }
-
 
 private:
   // ---- quality ------------------------------------------------------------------------------
@@ -133,10 +135,7 @@ private:
     return p;
   }
 
-  bool Bad(std::size_t e, bool regularity) const
-  {
-    return regularity ? quality_[e] <= 0 : quality_[e] < threshold_;
-  }
+  bool Bad(std::size_t e, bool regularity) const { return regularity ? quality_[e] <= 0 : quality_[e] < threshold_; }
 
   // ---- one sweep over the bad elements, worst first ------------------------------------------
   bool Sweep(bool regularity, bool surfaceAllowed)
@@ -207,11 +206,13 @@ private:
   // Elements around a node and its mirror partner, ascending.
   std::vector<std::size_t> Patch(std::size_t node) const
   {
-    std::vector<std::size_t> patch(adjacency_.adjacent.begin() + adjacency_.offsets[node], adjacency_.adjacent.begin() + adjacency_.offsets[node + 1]);
+    std::vector<std::size_t> patch(adjacency_.adjacent.begin() + adjacency_.offsets[node],
+                                   adjacency_.adjacent.begin() + adjacency_.offsets[node + 1]);
     const auto mirror = static_cast<std::size_t>(constraints_.Partner(node));
     if (mirror != node)
     {
-      patch.insert(patch.end(), adjacency_.adjacent.begin() + adjacency_.offsets[mirror], adjacency_.adjacent.begin() + adjacency_.offsets[mirror + 1]);
+      patch.insert(patch.end(), adjacency_.adjacent.begin() + adjacency_.offsets[mirror],
+                   adjacency_.adjacent.begin() + adjacency_.offsets[mirror + 1]);
       std::sort(patch.begin(), patch.end());
       patch.erase(std::unique(patch.begin(), patch.end()), patch.end());
     }
@@ -278,9 +279,7 @@ private:
     std::vector<double> current(patch.size()), trial;
     for (std::size_t k = 0; k < patch.size(); ++k)
       current[k] = quality_[patch[k]];
-    auto capped = [&](const std::vector<double>& v) {
-      return *std::min_element(v.begin(), v.end()) >= cap;
-    };
+    auto capped = [&](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()) >= cap; };
     if (capped(current))
       return false;
 
@@ -333,7 +332,8 @@ private:
           continue;
       }
       // 2. Line search along the gradient of the worst element around the node.
-      const std::size_t worst = static_cast<std::size_t>(std::min_element(current.begin(), current.end()) - current.begin());
+      const std::size_t worst =
+        static_cast<std::size_t>(std::min_element(current.begin(), current.end()) - current.begin());
       bool stepped = false;
       if (current[worst] > kDegenerate)
       {
@@ -379,7 +379,6 @@ private:
       failedAt = clock_;
     return moved;
   }
-
 
   FEMesh& mesh_;
   const RepairOptions& options_;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Mesh reparation (Bucki, Lobos, Payan, Hitschfeld 2011, improved as the MMRep-for-speech paper's
 // conclusion proposes): first make every element regular (positive Jacobian at every corner),
 // then raise every element's scaled Jacobian to a threshold, moving the nodes of the worst elements
@@ -35,7 +37,7 @@ struct RepairOptions
 
 struct RepairReport
 {
-  bool success = false;         // every element regular and >= threshold
+  bool success = false;                                             // every element regular and >= threshold
   double minScaledJacobianBefore = 0, minScaledJacobianAfter = 0;   // NaN when every element is degenerate
   double meanScaledJacobianBefore = 0, meanScaledJacobianAfter = 0; // (as quality::SummarizeScaledJacobian)
   std::size_t invertedBefore = 0, invertedAfter = 0;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Mirror node pairs for a repair that keeps a mesh symmetric about a plane: which node moves with
 // which, so that one move places both (the partner at the mirror image).
 #pragma once

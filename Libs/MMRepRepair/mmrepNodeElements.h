@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The solid elements around each node of an FE mesh (compressed rows), as the repair walks them.
 #pragma once
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepRepairConstraints.h"
 
 #include "mmrepMirrorPairs.h"
@@ -27,7 +29,7 @@ const std::vector<std::int32_t>* Set(const FEMesh& mesh, const char* name)
 } // namespace
 
 RepairConstraints::RepairConstraints(const FEMesh& mesh, const NodeElements& adjacency, const RepairOptions& options)
-  : mesh_(mesh)
+    : mesh_(mesh)
 {
   const std::size_t n = mesh_.nodes.size();
   surface_.assign(n, SurfaceKind::None);
@@ -72,7 +74,8 @@ RepairConstraints::RepairConstraints(const FEMesh& mesh, const NodeElements& adj
     std::vector<std::uint8_t> kind(n);
     for (std::size_t i = 0; i < n; ++i)
       kind[i] = static_cast<std::uint8_t>(surface_[i]);
-    if (auto pairs = mmrep::MirrorPairs(mesh_, adjacency, plane_, kind, kMirrorTolerance * std::max(Diagonal(), 1e-300)))
+    if (auto pairs =
+          mmrep::MirrorPairs(mesh_, adjacency, plane_, kind, kMirrorTolerance * std::max(Diagonal(), 1e-300)))
     {
       partner_ = std::move(*pairs);
       pairs_ = true;
@@ -188,7 +191,6 @@ std::vector<Point3> RepairConstraints::Directions(std::size_t node, const Point3
   }
   return d;
 }
-
 
 bool RepairConstraints::IsFixed(std::size_t node) const
 {

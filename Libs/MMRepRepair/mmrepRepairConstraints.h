@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Where each node of a mesh under repair may move (mmrepMeshRepair.h): `skin` and `skull` nodes
 // slide on their surface, nodes on the symmetry plane stay on it, mirror partners move together
 // (mmrepMirrorPairs.h), nodes of a surface set without any surface stay fixed.

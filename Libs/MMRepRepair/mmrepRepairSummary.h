@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // What a repair did, for its users: the scaled Jacobians for a histogram, the accuracy of the
 // surface node sets before and after, the JSON report and the one-line failure message of the
 // MeshReparation module.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Closest points on a triangle surface (vtkStaticCellLocator), used to keep skin and skull nodes on
 // their surfaces while the repair slides them, and to measure surface accuracy.
 #pragma once

@@ -1,6 +1,10 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Activation pictures (see the header).
 #include "mmrepActivationPictures.h"
+#include "mmrepPointCloud.h"
 
+#include "mmrepBoundaryFaces.h"
 #include "mmrepSnapshot.h"
 
 #include <Eigen/Geometry>
@@ -25,35 +29,8 @@ namespace
 vtkSmartPointer<vtkPolyData> SkinSurface(const FEMesh& mesh, const std::vector<Point3>& positions,
                                          const std::vector<Point3>& displacements)
 {
-  static const std::vector<std::vector<int>> hexFaces{{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6},
-                                                      {3, 0, 4, 7}, {0, 3, 2, 1}, {4, 5, 6, 7}};
-  static const std::vector<std::vector<int>> wedgeFaces{{0, 1, 2}, {3, 5, 4}, {0, 3, 4, 1}, {1, 4, 5, 2}, {2, 5, 3, 0}};
-  static const std::vector<std::vector<int>> tetFaces{{0, 1, 3}, {1, 2, 3}, {2, 0, 3}, {0, 2, 1}};
-  std::vector<char> skin(mesh.nodes.size(), 0);
-  if (const auto it = mesh.nodeSets.find("skin"); it != mesh.nodeSets.end())
-    for (auto n : it->second)
-      skin[static_cast<std::size_t>(n)] = 1;
-  std::map<std::vector<std::int32_t>, std::pair<int, std::vector<std::int32_t>>> faces;
-  for (const auto& e : mesh.elements)
-  {
-    const auto* table = e.type == ElementType::Hexahedron ? &hexFaces
-                        : e.type == ElementType::Wedge    ? &wedgeFaces
-                        : e.type == ElementType::Tetrahedron ? &tetFaces
-                                                             : nullptr;
-    if (table == nullptr)
-      continue;
-    for (const auto& f : *table)
-    {
-      std::vector<std::int32_t> ids;
-      for (int k : f)
-        ids.push_back(e.nodes[static_cast<std::size_t>(k)]);
-      auto key = ids;
-      std::sort(key.begin(), key.end());
-      auto& entry = faces[key];
-      ++entry.first;
-      entry.second = ids;
-    }
-  }
+  const std::vector<char> skin = NodeSetMask(mesh, "skin");
+  vtkSmartPointer<vtkPolyData> poly = BoundaryPolygons(mesh, &skin);
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(positions.size()));
@@ -65,36 +42,8 @@ vtkSmartPointer<vtkPolyData> SkinSurface(const FEMesh& mesh, const std::vector<P
     points->SetPoint(static_cast<vtkIdType>(i), positions[i].data());
     magnitude->SetValue(static_cast<vtkIdType>(i), displacements[i].norm());
   }
-  vtkNew<vtkCellArray> polys;
-  for (const auto& [key, entry] : faces)
-  {
-    if (entry.first != 1)
-      continue;
-    if (!std::all_of(key.begin(), key.end(), [&](std::int32_t n) { return skin[static_cast<std::size_t>(n)] != 0; }))
-      continue;
-    polys->InsertNextCell(static_cast<vtkIdType>(entry.second.size()));
-    for (auto n : entry.second)
-      polys->InsertCellPoint(n);
-  }
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
   poly->SetPoints(points);
-  poly->SetPolys(polys);
   poly->GetPointData()->AddArray(magnitude);
-  return poly;
-}
-
-vtkSmartPointer<vtkPolyData> PointCloud(const std::vector<Point3>& pts)
-{
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkCellArray> verts;
-  for (const auto& p : pts)
-  {
-    const vtkIdType id = points->InsertNextPoint(p.data());
-    verts->InsertNextCell(1, &id);
-  }
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->SetPoints(points);
-  poly->SetVerts(verts);
   return poly;
 }
 
@@ -116,7 +65,8 @@ double MaxSolidDisplacement(const FEMesh& mesh, const ActivationResult& result)
   for (const auto& e : mesh.elements)
     if (e.type != ElementType::Cable)
       for (int k = 0; k < NodeCount(e.type); ++k)
-        largest = std::max(largest, result.displacements[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])].norm());
+        largest = std::max(largest,
+                           result.displacements[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])].norm());
   return largest;
 }
 
@@ -146,7 +96,8 @@ void WriteActivationPictures(const FEMesh& mesh, const ActivationResult& result,
       if (result.displacements[i].norm() < 0.2 * maxDisplacement)
         continue;
       const Point3 end = mesh.nodes[i] + magnify * result.displacements[i];
-      const vtkIdType ids[2] = {linePoints->InsertNextPoint(mesh.nodes[i].data()), linePoints->InsertNextPoint(end.data())};
+      const vtkIdType ids[2] = {linePoints->InsertNextPoint(mesh.nodes[i].data()),
+                                linePoints->InsertNextPoint(end.data())};
       lines->InsertNextCell(2, ids);
     }
   auto motion = vtkSmartPointer<vtkPolyData>::New();

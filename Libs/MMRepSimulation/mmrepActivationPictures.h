@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Pictures of a muscle activation: the deformed skin coloured by displacement over the rest skin,
 // motion lines and landmarks, true scale, from the front and the left; optionally zoomed on the lips.
 #pragma once

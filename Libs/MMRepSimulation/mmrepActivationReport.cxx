@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The activation report (see the header).
 #include "mmrepActivationReport.h"
 
@@ -28,15 +30,18 @@ std::string ActivationReport(const ActivationResult& result, int threads, double
                              double maxDisplacement)
 {
   std::string s;
-  Append(s, "CalculiX: converged in %d increments, %d iterations, %d cutbacks, %.1f s (%d threads); "
-            "%zu solids, %zu cables, %zu equations, %zu fixed nodes, %zu sliding nodes, %zu symmetry-plane nodes\n",
+  Append(s,
+         "CalculiX: converged in %d increments, %d iterations, %d cutbacks, %.1f s (%d threads); "
+         "%zu solids, %zu cables, %zu equations, %zu fixed nodes, %zu sliding nodes, %zu symmetry-plane nodes\n",
          result.run.increments, result.run.iterations, result.run.cutbacks, result.run.seconds, threads,
          result.deck.solids, result.deck.springs, result.deck.equations, result.deck.fixedNodes,
          result.deck.slidingNodes, result.deck.symmetryNodes);
   for (const auto& m : result.muscles)
     Append(s, "muscle %-36s activation %.2f  length %.1f -> %.1f mm (%+.1f %%)  cable force mean %.3f N, max %.3f N\n",
-           m.muscle.c_str(), m.level, m.restLength, m.length, 100 * (m.length / m.restLength - 1), m.meanForce, m.maxForce);
-  Append(s, "%-22s %9s %9s %9s %9s   (mm; +x patient left, -y anterior, +z superior)\n", "landmark", "ux", "uy", "uz", "|u|");
+           m.muscle.c_str(), m.level, m.restLength, m.length, 100 * (m.length / m.restLength - 1), m.meanForce,
+           m.maxForce);
+  Append(s, "%-22s %9s %9s %9s %9s   (mm; +x patient left, -y anterior, +z superior)\n", "landmark", "ux", "uy", "uz",
+         "|u|");
   for (const auto& m : result.landmarks)
     Append(s, "%-22s %9.3f %9.3f %9.3f %9.3f   %s\n", m.name.c_str(), m.displacement.x(), m.displacement.y(),
            m.displacement.z(), m.displacement.norm(),
@@ -47,10 +52,12 @@ std::string ActivationReport(const ActivationResult& result, int threads, double
   if (mouth.hasCorners)
     Append(s, "mouth width %.2f -> %.2f mm (%+.2f); right corner %+.3f %+.3f %+.3f mm\n", mouth.restWidth, mouth.width,
            mouth.width - mouth.restWidth, mouth.rightCorner.x(), mouth.rightCorner.y(), mouth.rightCorner.z());
-  Append(s, "protrusion (forward): upper lip %+.3f mm, lower lip %+.3f mm\n", mouth.upperProtrusion, mouth.lowerProtrusion);
+  Append(s, "protrusion (forward): upper lip %+.3f mm, lower lip %+.3f mm\n", mouth.upperProtrusion,
+         mouth.lowerProtrusion);
   if (mouth.hasSlit)
-    Append(s, "lip aperture: height %.2f mm at the centre, width %.2f mm; lip gap min %+.3f mm, mean %+.3f mm "
-              "(contact pair: %zu nodes on %zu faces)\n",
+    Append(s,
+           "lip aperture: height %.2f mm at the centre, width %.2f mm; lip gap min %+.3f mm, mean %+.3f mm "
+           "(contact pair: %zu nodes on %zu faces)\n",
            mouth.apertureHeight, mouth.apertureWidth, mouth.minimumLipGap, mouth.meanLipGap, result.deck.contactNodes,
            result.deck.contactFaces);
   return s;

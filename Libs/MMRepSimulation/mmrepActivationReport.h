@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The text report of a muscle activation: solver figures, each muscle's length and force, every
 // landmark's displacement, and the mouth measures (width, aperture, protrusion, lip gap).
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // A user's request -> deck options (see the header).
 #include "mmrepActivationRequest.h"
 
@@ -29,7 +31,8 @@ Gesture ResolveGesture(const FEMesh& mesh, const ActivationRequest& request)
   }
   catch (const std::exception& e)
   {
-    throw std::invalid_argument(std::string(e.what()) + (IsGestureFile(request.gesture) ? "" : " (or a gesture file .json)"));
+    throw std::invalid_argument(std::string(e.what()) +
+                                (IsGestureFile(request.gesture) ? "" : " (or a gesture file .json)"));
   }
 }
 
@@ -88,11 +91,14 @@ DeckOptions MakeDeckOptions(const FEMesh& mesh, const ActivationRequest& request
   DeckOptions deck;
   deck.activations = Activations(mesh, request, gesture, jawAngle);
   if (jawAngle != 0 && !HasJaw(mesh))
-    throw std::invalid_argument("input model '" + modelName + "' has no jaw (node sets maxilla, mandible, jawAxis): a jaw "
+    throw std::invalid_argument("input model '" + modelName +
+                                "' has no jaw (node sets maxilla, mandible, jawAxis): a jaw "
                                 "opening needs a model built from the current atlas");
   if (!request.gesture.empty() && !HasMouthSlit(mesh))
-    throw std::invalid_argument("input model '" + modelName + "' has no mouth slit (sets upperLip, lowerLip, "
-                                "upperLipContact, lowerLipContact): gestures need a model built from the current atlas");
+    throw std::invalid_argument(
+      "input model '" + modelName +
+      "' has no mouth slit (sets upperLip, lowerLip, "
+      "upperLipContact, lowerLipContact): gestures need a model built from the current atlas");
   deck.materials = LayerMaterials(request.c10, request.c20, request.poissonRatio, request.layerScale);
   deck.hexahedronType = request.elementType;
   deck.cables.forceScale = request.forceScale;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // What a user asks SimulateMuscleActivation for (muscles or a gesture, jaw, tissue, element, solver),
 // turned into the library's ActivationOptions with every check the solve depends on.
 #pragma once
@@ -15,10 +17,10 @@ namespace mmrep::simulation
 struct ActivationRequest
 {
   std::vector<std::string> muscles;
-  std::vector<double> levels;   // one per muscle, or one for all
-  std::string gesture;          // built-in name or a .json gesture file; empty: `muscles`
-  bool hasJawAngle = false;     // false: the gesture's jaw angle (0 without a gesture)
-  double jawAngle = 0;          // degrees
+  std::vector<double> levels;    // one per muscle, or one for all
+  std::string gesture;           // built-in name or a .json gesture file; empty: `muscles`
+  bool hasJawAngle = false;      // false: the gesture's jaw angle (0 without a gesture)
+  double jawAngle = 0;           // degrees
   double c10 = 2500, c20 = 1175; // Pa (Nazari et al. 2010)
   double poissonRatio = 0.49;
   std::array<double, 3> layerScale{1, 1, 1}; // epidermis, dermis, hypodermis

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The muscle fibre law of the cable elements (Hill-type force-length), in N and mm.
 #pragma once
 

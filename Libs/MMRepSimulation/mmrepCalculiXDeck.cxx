@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // CalculiX deck writer for muscle activation (see the header for the model): checks the options,
 // plans the nodes, then writes the sections of mmrepDeckSections.h in order.
 #include "mmrepCalculiXDeck.h"
@@ -5,10 +7,6 @@
 #include "mmrepDeckSections.h"
 #include "mmrepHalfModel.h"
 #include "mmrepJaw.h"
-
-#include <vtkHexahedron.h>
-#include <vtkTetra.h>
-#include <vtkWedge.h>
 
 #include <algorithm>
 #include <cmath>
@@ -41,12 +39,14 @@ void CheckActivations(const FEMesh& mesh, const std::vector<MuscleActivation>& a
   {
     if (mesh.muscles.count(a.muscle) == 0 && IsHalfModel(mesh) && a.muscle.size() > 2 &&
         a.muscle.compare(a.muscle.size() - 2, 2, "_R") == 0)
-      throw std::invalid_argument("muscle '" + a.muscle + "' is on the right side, which this half model does not hold "
-                                  "(it is the left half, with node set '" + kSymmetryBoundarySet + "'): activate '" +
-                                  a.muscle.substr(0, a.muscle.size() - 2) + "_L', its mirror image");
+      throw std::invalid_argument("muscle '" + a.muscle +
+                                  "' is on the right side, which this half model does not hold "
+                                  "(it is the left half, with node set '" +
+                                  kSymmetryBoundarySet + "'): activate '" + a.muscle.substr(0, a.muscle.size() - 2) +
+                                  "_L', its mirror image");
     if (mesh.muscles.count(a.muscle) == 0)
-      throw std::invalid_argument("unknown muscle '" + a.muscle + "'; the model's muscles are: " +
-                                  deck::JoinNames(MuscleNames(mesh)));
+      throw std::invalid_argument("unknown muscle '" + a.muscle +
+                                  "'; the model's muscles are: " + deck::JoinNames(MuscleNames(mesh)));
     if (!seen.insert(a.muscle).second)
       throw std::invalid_argument("muscle '" + a.muscle + "' is given twice");
     if (!(a.level >= 0 && a.level <= 1))
@@ -58,26 +58,6 @@ void CheckActivations(const FEMesh& mesh, const std::vector<MuscleActivation>& a
   }
   if (!anyActive && requireActive)
     throw std::invalid_argument("every activation level is 0: nothing to simulate");
-}
-
-std::vector<double> ShapeFunctions(ElementType type, const std::array<double, 3>& pcoords)
-{
-  std::vector<double> w(static_cast<std::size_t>(NodeCount(type)));
-  switch (type)
-  {
-    case ElementType::Hexahedron:
-      vtkHexahedron::InterpolationFunctions(pcoords.data(), w.data());
-      break;
-    case ElementType::Wedge:
-      vtkWedge::InterpolationFunctions(pcoords.data(), w.data());
-      break;
-    case ElementType::Tetrahedron:
-      vtkTetra::InterpolationFunctions(pcoords.data(), w.data());
-      break;
-    default:
-      throw std::invalid_argument("shape functions are defined for solid elements only");
-  }
-  return w;
 }
 
 namespace deck
@@ -94,7 +74,8 @@ void CheckSolverOptions(const FEMesh& mesh, const DeckOptions& options)
   const StepControl& step = options.step;
   if (!(step.initialIncrement > 0 && step.minIncrement > 0 && step.minIncrement <= step.initialIncrement &&
         step.initialIncrement <= step.maxIncrement && step.maxIncrement <= 1 && step.maxIncrements > 0))
-    throw std::invalid_argument("step control needs 0 < minimum <= initial <= maximum increment <= 1 and at least one increment");
+    throw std::invalid_argument(
+      "step control needs 0 < minimum <= initial <= maximum increment <= 1 and at least one increment");
   const CableModel& cm = options.cables;
   if (!(cm.forceScale > 0 && cm.lengthWidth > 0 && cm.stabilisingSlope > 0) || !std::isfinite(cm.forceScale))
     throw std::invalid_argument("the cable force scale, force-length width and stabilising slope must be positive");
@@ -105,14 +86,15 @@ void CheckSolverOptions(const FEMesh& mesh, const DeckOptions& options)
 // maxilla and mandible but not the axis's right condyle: it cannot open the jaw).
 void PlanBone(const FEMesh& mesh, const DeckOptions& options, DeckPlan& plan)
 {
-  const bool jaw = options.fixedNodeSet == "skull" && mesh.nodeSets.count(kMaxillaSet) && mesh.nodeSets.count(kMandibleSet) &&
-                   !mesh.nodeSets.at(kMaxillaSet).empty();
+  const bool jaw = options.fixedNodeSet == "skull" && mesh.nodeSets.count(kMaxillaSet) &&
+                   mesh.nodeSets.count(kMandibleSet) && !mesh.nodeSets.at(kMaxillaSet).empty();
   if (!(options.jawAngle >= kMinJawAngle && options.jawAngle <= kMaxJawAngle))
     throw std::invalid_argument("jaw angle " + FormatDouble(options.jawAngle) + " deg is outside [" +
                                 FormatDouble(kMinJawAngle) + ", " + FormatDouble(kMaxJawAngle) + "] deg");
   if (options.jawAngle != 0 && !(jaw && HasJaw(mesh)))
-    throw std::invalid_argument("a jaw opening needs a model with a jaw (node sets 'maxilla', 'mandible' and 'jawAxis'); "
-                                "this one has none: rebuild it from the current atlas");
+    throw std::invalid_argument(
+      "a jaw opening needs a model with a jaw (node sets 'maxilla', 'mandible' and 'jawAxis'); "
+      "this one has none: rebuild it from the current atlas");
   if (!(options.contactStiffness > 0))
     throw std::invalid_argument("the lip contact stiffness must be positive");
   const auto fixedIt = mesh.nodeSets.find(jaw ? kMaxillaSet : options.fixedNodeSet);
@@ -128,7 +110,8 @@ void PlanBone(const FEMesh& mesh, const DeckOptions& options, DeckPlan& plan)
   std::sort(plan.fixed.begin(), plan.fixed.end());
   plan.fixed.erase(std::unique(plan.fixed.begin(), plan.fixed.end()), plan.fixed.end());
   if (plan.fixed.empty())
-    throw std::invalid_argument("node set '" + options.fixedNodeSet + "' holds no node of a solid element: nothing is fixed");
+    throw std::invalid_argument("node set '" + options.fixedNodeSet +
+                                "' holds no node of a solid element: nothing is fixed");
 }
 
 // The active tracks' nodes join the deck; each must be embedded in a solid and be no solid's node.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // CalculiX (ccx) input deck for a muscle-activation solve of an FE face model.
 //
 // Units: the mesh is in mm, so forces are N, stresses/moduli N/mm² (= MPa; 1 Pa = 1e-6 N/mm²),
@@ -25,6 +27,7 @@
 #pragma once
 
 #include "mmrepCableLaw.h"
+#include "mmrepEmbedding.h"
 #include "mmrepFEMesh.h"
 #include "mmrepLipSupport.h"
 #include "mmrepTissue.h"
@@ -69,8 +72,8 @@ struct DeckOptions
   CableModel cables;
   std::string fixedNodeSet = "skull";
   std::vector<SlidingNode> slidingNodes; // e.g. LipSupportNodes(mesh); fixed nodes among them are skipped
-  bool symmetry = true; // a half model: its symmetry boundary's nodes move within the plane
-  std::vector<NodalLoad> loads; // with loads, `activations` may be empty (a purely passive solve)
+  bool symmetry = true;                  // a half model: its symmetry boundary's nodes move within the plane
+  std::vector<NodalLoad> loads;          // with loads, `activations` may be empty (a purely passive solve)
   StepControl step;
   // Jaw opening (degrees, mmrepJaw.h): on a model with a jaw the `maxilla` nodes are fixed and the
   // `mandible` nodes rotate rigidly about the condylar axis (prescribed displacements, ramped over
@@ -89,7 +92,7 @@ struct DeckSummary
 {
   std::size_t solids = 0, springs = 0, equations = 0, fixedNodes = 0, slidingNodes = 0, symmetryNodes = 0;
   std::size_t jawNodes = 0, contactNodes = 0, contactFaces = 0; // mandible nodes moved; lip gap pairs, facing faces
-  std::vector<std::string> activeMuscles; // muscles written as springs, in activation order
+  std::vector<std::string> activeMuscles;                       // muscles written as springs, in activation order
 };
 
 // Names of the muscles of `mesh`, in stored (sorted) order.
@@ -109,8 +112,7 @@ void CheckActivations(const FEMesh& mesh, const std::vector<MuscleActivation>& a
 // without a valid embedding, a load on a node that is not a solid's).
 DeckSummary WriteCalculiXDeck(const FEMesh& mesh, const DeckOptions& options, std::ostream& out);
 
-// Shape-function weights of a point with parametric coordinates `pcoords` in a solid element
-// (VTK convention for hexahedra, wedges and tetrahedra), in the element's node order.
-std::vector<double> ShapeFunctions(ElementType type, const std::array<double, 3>& pcoords);
+// Shape functions of the embedding: ShapeFunctions in mmrepEmbedding.h (MMRepFE).
+using mmrep::ShapeFunctions;
 
 } // namespace mmrep::simulation

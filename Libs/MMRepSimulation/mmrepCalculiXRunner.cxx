@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // ccx runner: temporary job folder, live log parsing for progress, convergence checks.
 #include "mmrepCalculiXRunner.h"
 
@@ -44,7 +46,8 @@ public:
   {
     std::string pattern = (fs::temp_directory_path() / "mmrep-ccx-XXXXXX").string();
     if (::mkdtemp(pattern.data()) == nullptr)
-      throw std::runtime_error("cannot create a temporary folder for CalculiX in " + fs::temp_directory_path().string());
+      throw std::runtime_error("cannot create a temporary folder for CalculiX in " +
+                               fs::temp_directory_path().string());
     path_ = pattern;
   }
   ~JobDirectory()
@@ -144,8 +147,9 @@ std::string FindCalculiX(const std::string& executable)
       start = end + 1;
     }
   }
-  throw std::runtime_error("CalculiX solver '" + wanted +
-                           "' not found on PATH: install the Debian package calculix-ccx or set MMREP_CCX to the ccx executable");
+  throw std::runtime_error(
+    "CalculiX solver '" + wanted +
+    "' not found on PATH: install the Debian package calculix-ccx or set MMREP_CCX to the ccx executable");
 }
 
 CalculiXRun RunCalculiX(const std::string& deck, const RunOptions& options)

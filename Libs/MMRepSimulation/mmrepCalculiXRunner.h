@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Runs CalculiX (ccx) on a deck in a private temporary directory and reads its nodal results back.
 #pragma once
 
@@ -12,24 +14,24 @@ namespace mmrep::simulation
 
 struct RunOptions
 {
-  std::string executable; // empty: $MMREP_CCX, else `ccx` on PATH
-  int threads = 1;        // OMP_NUM_THREADS for ccx; 1 gives identical bytes on every run
-  bool keepDirectory = false; // leave the job folder (deck, log, .frd, .dat) for inspection
+  std::string executable;               // empty: $MMREP_CCX, else `ccx` on PATH
+  int threads = 1;                      // OMP_NUM_THREADS for ccx; 1 gives identical bytes on every run
+  bool keepDirectory = false;           // leave the job folder (deck, log, .frd, .dat) for inspection
   std::function<void(double)> progress; // step time reached, in [0, 1]
 };
 
 struct CalculiXRun
 {
-  bool converged = false;   // exit code 0, "Job finished", and the last result at step time 1
+  bool converged = false; // exit code 0, "Job finished", and the last result at step time 1
   int exitCode = -1;
-  int increments = 0;       // converged increments (result blocks written)
-  int iterations = 0;       // Newton iterations over all attempts
-  int cutbacks = 0;         // increments that were retried with a smaller size
-  double stepTime = 0;      // step time of the last converged increment
-  double seconds = 0;       // wall time of the ccx process
-  std::string directory;    // job folder when kept
-  std::string log;          // ccx's stdout and stderr
-  std::string message;      // why it did not converge (first *ERROR line or last log line)
+  int increments = 0;    // converged increments (result blocks written)
+  int iterations = 0;    // Newton iterations over all attempts
+  int cutbacks = 0;      // increments that were retried with a smaller size
+  double stepTime = 0;   // step time of the last converged increment
+  double seconds = 0;    // wall time of the ccx process
+  std::string directory; // job folder when kept
+  std::string log;       // ccx's stdout and stderr
+  std::string message;   // why it did not converge (first *ERROR line or last log line)
   std::vector<FrdBlock> results;
 };
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The deck's constraints: sliding and symmetry-plane nodes, fixed bone, lip gap elements
 // (see mmrepDeckSections.h).
 #include "mmrepDeckSections.h"
@@ -40,7 +42,8 @@ bool OnMandibleSide(const FEMesh& mesh, const DeckPlan& plan, std::int32_t node)
 // The equations n·u = 0 of one node with one or more normals, in reduced row echelon form: each
 // equation has its own dependent DOF (its largest term), absent from the node's other equations;
 // dependent constraints drop out.
-void WriteNormalEquations(std::int32_t node, const std::vector<Point3>& normals, DeckSummary& summary, std::ostream& out)
+void WriteNormalEquations(std::int32_t node, const std::vector<Point3>& normals, DeckSummary& summary,
+                          std::ostream& out)
 {
   std::vector<Point3> rows;
   std::vector<int> leads;
@@ -66,7 +69,9 @@ void WriteNormalEquations(std::int32_t node, const std::vector<Point3>& normals,
     for (int d = 0; d < 3; ++d)
       if (d != leads[i] && std::abs(n[d]) > 1e-12 * std::abs(n[leads[i]]))
         others.push_back(d);
-    out << "*EQUATION\n" << others.size() + 1 << "\n" << node + 1 << ", " << leads[i] + 1 << ", " << FormatDouble(n[leads[i]]);
+    out << "*EQUATION\n"
+        << others.size() + 1 << "\n"
+        << node + 1 << ", " << leads[i] + 1 << ", " << FormatDouble(n[leads[i]]);
     for (int d : others)
       out << ", " << node + 1 << ", " << d + 1 << ", " << FormatDouble(n[d]);
     out << "\n";
@@ -92,7 +97,8 @@ void WriteConstraints(const FEMesh& mesh, const DeckOptions& options, const Deck
   };
   for (const auto& s : options.slidingNodes)
   {
-    if (s.node < 0 || static_cast<std::size_t>(s.node) >= mesh.nodes.size() || !plan.solidNode[static_cast<std::size_t>(s.node)])
+    if (s.node < 0 || static_cast<std::size_t>(s.node) >= mesh.nodes.size() ||
+        !plan.solidNode[static_cast<std::size_t>(s.node)])
       throw std::invalid_argument("sliding node " + std::to_string(s.node) + " is not a node of a solid element");
     if (isFixed[static_cast<std::size_t>(s.node)] || OnMandibleSide(mesh, plan, s.node))
       continue;
@@ -132,8 +138,10 @@ void WriteLipGaps(const FEMesh& mesh, const DeckOptions& options, const DeckPlan
   std::map<std::int32_t, Point3> normals;
   for (const auto& f : upperFaces)
   {
-    const Point3 n = 0.5 * (mesh.nodes[static_cast<std::size_t>(f.nodes[2])] - mesh.nodes[static_cast<std::size_t>(f.nodes[0])])
-                           .cross(mesh.nodes[static_cast<std::size_t>(f.nodes[3])] - mesh.nodes[static_cast<std::size_t>(f.nodes[1])]);
+    const Point3 n =
+      0.5 *
+      (mesh.nodes[static_cast<std::size_t>(f.nodes[2])] - mesh.nodes[static_cast<std::size_t>(f.nodes[0])])
+        .cross(mesh.nodes[static_cast<std::size_t>(f.nodes[3])] - mesh.nodes[static_cast<std::size_t>(f.nodes[1])]);
     for (auto v : f.nodes) // area-weighted, outward of the upper lip: towards the lower lip
       normals.try_emplace(v, Point3::Zero()).first->second += n;
   }

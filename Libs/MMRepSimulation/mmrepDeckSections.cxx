@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The nodes, solids, cables, embedding and step of the CalculiX deck (see mmrepDeckSections.h).
 #include "mmrepDeckSections.h"
 
@@ -34,7 +36,8 @@ const char* SolidType(ElementType type, const std::string& hexType)
 std::string LayerTag(TissueLayer layer)
 {
   std::string name = TissueLayerName(layer);
-  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  std::transform(name.begin(), name.end(), name.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
   return name;
 }
 
@@ -45,8 +48,9 @@ void WriteMaterial(const HyperelasticMaterial& m, TissueLayer layer, std::ostrea
                                 " needs a positive shear modulus and D1 > 0");
   const std::string tag = LayerTag(layer);
   out << "*MATERIAL, NAME=M_" << tag << "\n*HYPERELASTIC, POLYNOMIAL, N=2\n"
-      << FormatDouble(m.c10) << ", " << FormatDouble(m.c01) << ", " << FormatDouble(m.c20) << ", " << FormatDouble(m.c11)
-      << ", " << FormatDouble(m.c02) << ", " << FormatDouble(m.d1) << ", " << FormatDouble(m.d2) << "\n";
+      << FormatDouble(m.c10) << ", " << FormatDouble(m.c01) << ", " << FormatDouble(m.c20) << ", "
+      << FormatDouble(m.c11) << ", " << FormatDouble(m.c02) << ", " << FormatDouble(m.d1) << ", " << FormatDouble(m.d2)
+      << "\n";
   out << "*SOLID SECTION, ELSET=L_" << tag << ", MATERIAL=M_" << tag << "\n";
 }
 } // namespace
@@ -89,7 +93,8 @@ void WriteNodes(const FEMesh& mesh, const DeckPlan& plan, std::ostream& out)
 
 void WriteSolids(const FEMesh& mesh, const DeckOptions& options, DeckSummary& summary, std::ostream& out)
 {
-  const TissueLayer layers[] = {TissueLayer::None, TissueLayer::Epidermis, TissueLayer::Dermis, TissueLayer::Hypodermis};
+  const TissueLayer layers[] = {TissueLayer::None, TissueLayer::Epidermis, TissueLayer::Dermis,
+                                TissueLayer::Hypodermis};
   const ElementType solidTypes[] = {ElementType::Hexahedron, ElementType::Wedge, ElementType::Tetrahedron};
   for (TissueLayer layer : layers)
   {
@@ -136,11 +141,13 @@ void WriteCables(const FEMesh& mesh, const DeckOptions& options, const DeckPlan&
     {
       const auto id = track.cables[c];
       const Element& e = mesh.elements[static_cast<std::size_t>(id)];
-      const double L0 = (mesh.nodes[static_cast<std::size_t>(e.nodes[1])] - mesh.nodes[static_cast<std::size_t>(e.nodes[0])]).norm();
+      const double L0 =
+        (mesh.nodes[static_cast<std::size_t>(e.nodes[1])] - mesh.nodes[static_cast<std::size_t>(e.nodes[0])]).norm();
       if (!(L0 > 0))
         throw std::invalid_argument("muscle '" + a->muscle + "': cable " + std::to_string(c) + " has zero length");
       const std::string set = "C" + std::to_string(id + 1);
-      out << "*ELEMENT, TYPE=SPRINGA, ELSET=" << set << "\n" << id + 1 << ", " << e.nodes[0] + 1 << ", " << e.nodes[1] + 1 << "\n";
+      out << "*ELEMENT, TYPE=SPRINGA, ELSET=" << set << "\n"
+          << id + 1 << ", " << e.nodes[0] + 1 << ", " << e.nodes[1] + 1 << "\n";
       out << "*SPRING, ELSET=" << set << ", NONLINEAR\n";
       // Two curves: load parameter 0 (relaxed) and 1 (the muscle's level); the law is linear in the
       // level, so ccx's interpolation between them is the law at the ramped level.
@@ -173,9 +180,11 @@ void WriteEmbedding(const FEMesh& mesh, const DeckPlan& plan, DeckSummary& summa
           terms.emplace_back(host.nodes[k], -w[k]);
       for (int dof = 1; dof <= 3; ++dof)
       {
-        out << (dof == 1 ? "*EQUATION\n" : "") << terms.size() + 1 << "\n" << track.nodes[i] + 1 << ", " << dof << ", 1.";
+        out << (dof == 1 ? "*EQUATION\n" : "") << terms.size() + 1 << "\n"
+            << track.nodes[i] + 1 << ", " << dof << ", 1.";
         for (std::size_t k = 0; k < terms.size(); ++k)
-          out << (((k + 1) % 4 == 0) ? "\n" : ", ") << terms[k].first + 1 << ", " << dof << ", " << FormatDouble(terms[k].second);
+          out << (((k + 1) % 4 == 0) ? "\n" : ", ") << terms[k].first + 1 << ", " << dof << ", "
+              << FormatDouble(terms[k].second);
         out << "\n";
         ++summary.equations;
       }

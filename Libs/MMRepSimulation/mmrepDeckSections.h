@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The parts of the CalculiX deck, written in order by WriteCalculiXDeck (internal to MMRepSimulation).
 #pragma once
 
@@ -20,10 +22,10 @@ std::string JoinNames(const std::vector<std::string>& names);
 // Which nodes the deck holds and how the bone moves, checked against the options.
 struct DeckPlan
 {
-  std::vector<char> used;       // nodes written (solid nodes and the active tracks' nodes)
-  std::vector<char> solidNode;  // nodes of a solid element
-  std::vector<std::int32_t> fixed;    // sorted, unique
-  std::vector<std::int32_t> mandible; // solid nodes moved by the jaw (empty at angle 0)
+  std::vector<char> used;                      // nodes written (solid nodes and the active tracks' nodes)
+  std::vector<char> solidNode;                 // nodes of a solid element
+  std::vector<std::int32_t> fixed;             // sorted, unique
+  std::vector<std::int32_t> mandible;          // solid nodes moved by the jaw (empty at angle 0)
   std::vector<const MuscleActivation*> active; // positive levels, in activation order
 };
 

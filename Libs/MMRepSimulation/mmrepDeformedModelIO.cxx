@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The deformed model as a .vtu (see mmrepDeformedModelIO.h).
 #include "mmrepDeformedModelIO.h"
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The deformed model of a muscle activation as a VTK .vtu: nodes at their deformed positions, the
 // FE model's sets, muscles and landmarks, point arrays Displacement (mm, the active vectors) and
 // DisplacementMagnitude.

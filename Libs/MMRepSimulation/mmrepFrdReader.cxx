@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // .frd nodal result reader: parses the "100C" result blocks (fixed-width ASCII records).
 #include "mmrepFrdReader.h"
 

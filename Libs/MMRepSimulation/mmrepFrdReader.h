@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Reader for the nodal results of CalculiX's ASCII result file (.frd).
 //
 // Only what a static solve needs: every nodal result block (name such as DISP, its step time and
@@ -17,10 +19,10 @@ namespace mmrep::simulation
 
 struct FrdBlock
 {
-  std::string name;      // e.g. "DISP"
-  double time = 0;       // step time of the block (100CL record)
-  int step = 0;          // step number
-  int components = 0;    // values per node written in the file
+  std::string name;                          // e.g. "DISP"
+  double time = 0;                           // step time of the block (100CL record)
+  int step = 0;                              // step number
+  int components = 0;                        // values per node written in the file
   std::map<int, std::vector<double>> values; // node id (as in the deck) -> values
 };
 

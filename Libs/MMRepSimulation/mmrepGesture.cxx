@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Built-in speech gestures and gesture files.
 #include "mmrepGesture.h"
 
@@ -37,7 +39,9 @@ const std::vector<Definition>& Definitions()
       {"OrbicularisOrisMarginalisLower", 1.0}},
      0.0},
     {"open", {}, 10.0},
-    {"close", {{"OrbicularisOrisMarginalisUpper", 0.6}, {"OrbicularisOrisMarginalisLower", 0.6}, {"Mentalis", 0.3}}, 0.0}};
+    {"close",
+     {{"OrbicularisOrisMarginalisUpper", 0.6}, {"OrbicularisOrisMarginalisLower", 0.6}, {"Mentalis", 0.3}},
+     0.0}};
   return all;
 }
 
@@ -68,7 +72,8 @@ Gesture BuiltInGesture(const std::string& name, const FEMesh& mesh)
         if (half && std::string(side) == "_R")
           continue;
         if (mesh.muscles.count(muscle) == 0)
-          throw std::invalid_argument("gesture '" + name + "' needs muscle '" + muscle + "', which the model does not have");
+          throw std::invalid_argument("gesture '" + name + "' needs muscle '" + muscle +
+                                      "', which the model does not have");
         g.activations.push_back({muscle, part.level});
       }
     return g;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Speech gestures: which muscles to activate, how much, and the jaw opening.
 //   smile: both zygomatici majores at full activation (the mouth corners move up and lateral);
 //   round: the four orbicularis oris tracks of each side at full activation (lips forward, mouth narrower);

@@ -1,5 +1,9 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The lip-support nodes (see the header).
 #include "mmrepLipSupport.h"
+
+#include "mmrepBoundaryFaces.h"
 
 #include <Eigen/Geometry>
 
@@ -25,33 +29,14 @@ std::vector<SlidingNode> LipSupportNodes(const FEMesh& mesh, double margin)
     zmin = std::min(zmin, p.z());
     zmax = std::max(zmax, p.z());
   }
-  std::vector<char> isInner(mesh.nodes.size(), 0);
-  for (auto n : inner->second)
-    isInner[static_cast<std::size_t>(n)] = 1;
-  // Boundary quads of the hexahedra whose four nodes are inner nodes: the inner surface.
-  static const int faces[6][4] = {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}, {0, 3, 2, 1}, {4, 5, 6, 7}};
-  std::map<std::array<std::int32_t, 4>, std::pair<int, std::array<std::int32_t, 4>>> quads;
-  for (const auto& e : mesh.elements)
-  {
-    if (e.type != ElementType::Hexahedron)
-      continue;
-    for (const auto& f : faces)
-    {
-      std::array<std::int32_t, 4> ids{e.nodes[static_cast<std::size_t>(f[0])], e.nodes[static_cast<std::size_t>(f[1])],
-                                      e.nodes[static_cast<std::size_t>(f[2])], e.nodes[static_cast<std::size_t>(f[3])]};
-      auto key = ids;
-      std::sort(key.begin(), key.end());
-      auto& q = quads[key];
-      ++q.first;
-      q.second = ids;
-    }
-  }
+  // The inner surface: boundary quadrilaterals of the hexahedra whose four nodes are inner nodes.
+  const std::vector<char> isInner = NodeSetMask(mesh, "inner");
   std::map<std::int32_t, Point3> normals;
-  for (const auto& [key, q] : quads)
+  for (const BoundaryFace& face : BoundaryFaces(mesh, &isInner))
   {
-    if (q.first != 1 || !std::all_of(key.begin(), key.end(), [&](std::int32_t n) { return isInner[static_cast<std::size_t>(n)] != 0; }))
+    if (mesh.elements[static_cast<std::size_t>(face.element)].type != ElementType::Hexahedron)
       continue;
-    const auto& id = q.second;
+    const auto& id = face.nodes;
     const Point3 a = mesh.nodes[static_cast<std::size_t>(id[2])] - mesh.nodes[static_cast<std::size_t>(id[0])];
     const Point3 b = mesh.nodes[static_cast<std::size_t>(id[3])] - mesh.nodes[static_cast<std::size_t>(id[1])];
     const Point3 n = 0.5 * a.cross(b); // area-weighted
@@ -66,7 +51,8 @@ std::vector<SlidingNode> LipSupportNodes(const FEMesh& mesh, double margin)
   for (const auto& [node, n] : normals)
   {
     const Point3& p = mesh.nodes[static_cast<std::size_t>(node)];
-    if (p.x() < xmin - margin || p.x() > xmax + margin || p.z() < zmin - margin || p.z() > zmax + margin || !(n.norm() > 0))
+    if (p.x() < xmin - margin || p.x() > xmax + margin || p.z() < zmin - margin || p.z() > zmax + margin ||
+        !(n.norm() > 0))
       continue;
     out.push_back({node, n.normalized()});
   }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The lips' support by the teeth and gums: nodes that slide on a rigid surface.
 #pragma once
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Muscle activation: runs the deck through ccx and maps the results back onto the model.
 #include "mmrepMuscleActivation.h"
 
@@ -86,7 +88,8 @@ ActivationResult SimulateMuscleActivation(const FEMesh& mesh, const ActivationOp
   for (const auto& [id, v] : disp->values)
   {
     if (id < 1 || static_cast<std::size_t>(id) > mesh.nodes.size() || v.size() < 3)
-      throw std::runtime_error("the CalculiX results name node " + std::to_string(id) + ", which the model does not have");
+      throw std::runtime_error("the CalculiX results name node " + std::to_string(id) +
+                               ", which the model does not have");
     result.displacements[static_cast<std::size_t>(id - 1)] = Point3(v[0], v[1], v[2]);
     known[static_cast<std::size_t>(id - 1)] = 1;
   }

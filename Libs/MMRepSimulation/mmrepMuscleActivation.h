@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Muscle activation of an FE face model with CalculiX: deck, solve, displacements of every node
 // and of the landmarks, cable forces.
 #pragma once
@@ -23,25 +25,25 @@ struct LandmarkMotion
   std::string name;
   Point3 rest = Point3::Zero();
   Point3 displacement = Point3::Zero();
-  int element = -1;      // solid element used for the interpolation, -1: nearest node
-  double distance = 0;   // distance from the landmark to that element (0 inside), or to the node
+  int element = -1;    // solid element used for the interpolation, -1: nearest node
+  double distance = 0; // distance from the landmark to that element (0 inside), or to the node
 };
 
 struct MuscleForces
 {
   std::string muscle;
   double level = 0;
-  double meanForce = 0, maxForce = 0;   // N, over the cables, deformed state
-  double restLength = 0, length = 0;    // mm, whole track
+  double meanForce = 0, maxForce = 0; // N, over the cables, deformed state
+  double restLength = 0, length = 0;  // mm, whole track
 };
 
 struct ActivationResult
 {
   DeckSummary deck;
   CalculiXRun run;
-  std::vector<Point3> displacements;    // one per mesh node (mm)
+  std::vector<Point3> displacements; // one per mesh node (mm)
   std::vector<LandmarkMotion> landmarks;
-  std::vector<MuscleForces> muscles;    // active muscles
+  std::vector<MuscleForces> muscles; // active muscles
 };
 
 // Throws std::invalid_argument for a bad activation (see CheckActivations) and std::runtime_error

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Synthetic subject images and displacement fields. Every voxel is computed independently, so the
 // multi-threaded loops give the same bytes whatever the thread count.
 #include "mmrepSyntheticSubject.h"
@@ -27,8 +29,7 @@ Eigen::Vector3d PhysicalPoint(const itk::ImageBase<3>* image, const itk::Index<3
 }
 
 // Fills a field on the grid with f(point) - point.
-template <typename F>
-DisplacementField::Pointer FillField(const itk::ImageBase<3>* grid, F&& map)
+template <typename F> DisplacementField::Pointer FillField(const itk::ImageBase<3>* grid, F&& map)
 {
   auto field = DisplacementField::New();
   field->SetOrigin(grid->GetOrigin());
@@ -37,7 +38,8 @@ DisplacementField::Pointer FillField(const itk::ImageBase<3>* grid, F&& map)
   field->SetRegions(grid->GetLargestPossibleRegion());
   field->Allocate();
   itk::MultiThreaderBase::New()->ParallelizeImageRegion<3>(
-    field->GetBufferedRegion(), [&](const DisplacementField::RegionType& region) {
+    field->GetBufferedRegion(),
+    [&](const DisplacementField::RegionType& region) {
       for (itk::ImageRegionIteratorWithIndex<DisplacementField> it(field, region); !it.IsAtEnd(); ++it)
       {
         const Eigen::Vector3d p = PhysicalPoint(grid, it.GetIndex());
@@ -94,7 +96,8 @@ CTImage::Pointer ResampleSyntheticSubject(const CTImage* source, const Synthetic
   std::atomic<std::size_t> done{0};
   std::mutex progressMutex;
   itk::MultiThreaderBase::New()->ParallelizeImageRegion<3>(
-    subject->GetBufferedRegion(), [&](const CTImage::RegionType& region) {
+    subject->GetBufferedRegion(),
+    [&](const CTImage::RegionType& region) {
       for (itk::ImageRegionIteratorWithIndex<CTImage> it(subject, region); !it.IsAtEnd(); ++it)
       {
         const Eigen::Vector3d x = warp.Inverse(PhysicalPoint(subject, it.GetIndex()));

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Synthetic subject CT from a source CT and a SyntheticWarp, and the warp's dense displacement
 // fields (see mmrepSyntheticWarp.h for the direction convention).
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Synthetic subject warp: rigid head motion and a smooth random Gaussian-bump displacement.
 #include "mmrepSyntheticWarp.h"
 
@@ -27,8 +29,7 @@ SyntheticWarp::SyntheticWarp(const SyntheticWarpParameters& p) : parameters_(p)
 {
   for (double a : {p.rollDegrees, p.pitchDegrees, p.yawDegrees})
     if (!(std::abs(a) <= 15.0))
-      throw std::invalid_argument("synthetic warp: rotation angle " + std::to_string(a) +
-                                  " deg is outside [-15, 15]");
+      throw std::invalid_argument("synthetic warp: rotation angle " + std::to_string(a) + " deg is outside [-15, 15]");
   if (!p.translation.allFinite() || !p.centre.allFinite())
     throw std::invalid_argument("synthetic warp: translation and centre must be finite");
   if (!(p.width > 0) || !std::isfinite(p.width))
@@ -60,10 +61,10 @@ SyntheticWarp::SyntheticWarp(const SyntheticWarpParameters& p) : parameters_(p)
   }
   gradientBound_ = p.bumps * p.amplitude * std::exp(-0.5) / p.width;
   if (gradientBound_ > kMaximumGradient)
-    throw std::invalid_argument("synthetic warp: bumps x amplitude too large for the width (gradient bound " +
-                                std::to_string(gradientBound_) + " > " + std::to_string(kMaximumGradient) +
-                                "; need bumps * amplitude <= " +
-                                std::to_string(kMaximumGradient * p.width / std::exp(-0.5)) + " mm)");
+    throw std::invalid_argument(
+      "synthetic warp: bumps x amplitude too large for the width (gradient bound " + std::to_string(gradientBound_) +
+      " > " + std::to_string(kMaximumGradient) +
+      "; need bumps * amplitude <= " + std::to_string(kMaximumGradient * p.width / std::exp(-0.5)) + " mm)");
 }
 
 Eigen::Vector3d SyntheticWarp::Displacement(const Eigen::Vector3d& z) const

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // A known, smooth, invertible map between a source head and a synthetic subject, for testing the
 // registration against ground truth.
 //
@@ -27,15 +29,15 @@ namespace mmrep
 
 struct SyntheticWarpParameters
 {
-  double rollDegrees = 8.0;  // about the anterior-posterior axis (LPS y)
-  double pitchDegrees = 0.0; // about the left-right axis (LPS x)
-  double yawDegrees = 5.0;   // about the superior axis (LPS z)
-  Eigen::Vector3d translation{4.0, -3.0, 2.0}; // mm
+  double rollDegrees = 8.0;                         // about the anterior-posterior axis (LPS y)
+  double pitchDegrees = 0.0;                        // about the left-right axis (LPS x)
+  double yawDegrees = 5.0;                          // about the superior axis (LPS z)
+  Eigen::Vector3d translation{4.0, -3.0, 2.0};      // mm
   Eigen::Vector3d centre = Eigen::Vector3d::Zero(); // rotation centre (source space, mm)
-  int bumps = 6;           // Gaussian bumps in u
-  double amplitude = 2.5;  // mm, |a_k| of each bump
-  double width = 50.0;     // mm, σ of the bumps
-  std::uint32_t seed = 1;  // random centres and directions
+  int bumps = 6;                                    // Gaussian bumps in u
+  double amplitude = 2.5;                           // mm, |a_k| of each bump
+  double width = 50.0;                              // mm, σ of the bumps
+  std::uint32_t seed = 1;                           // random centres and directions
   // Box (source space, mm) where the bump centres are drawn.
   Eigen::Vector3d regionMin = Eigen::Vector3d::Constant(-100.0);
   Eigen::Vector3d regionMax = Eigen::Vector3d::Constant(100.0);
@@ -53,8 +55,8 @@ public:
   Eigen::Vector3d Forward(const Eigen::Vector3d& source) const;  // F: source -> subject
   Eigen::Vector3d Inverse(const Eigen::Vector3d& subject) const; // G: subject -> source
 
-  Eigen::Vector3d Displacement(const Eigen::Vector3d& z) const;         // u(z), source space
-  Eigen::Matrix3d DisplacementGradient(const Eigen::Vector3d& z) const; // ∂u/∂z
+  Eigen::Vector3d Displacement(const Eigen::Vector3d& z) const;          // u(z), source space
+  Eigen::Matrix3d DisplacementGradient(const Eigen::Vector3d& z) const;  // ∂u/∂z
   Eigen::Matrix3d InverseJacobian(const Eigen::Vector3d& subject) const; // ∂G/∂y
   Eigen::Matrix3d ForwardJacobian(const Eigen::Vector3d& source) const;  // ∂F/∂x
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // CorrespondenceBenchmark: does every atlas node land on the same anatomical point of the subject?
 // One run, side by side for every registration mode (the similarity alone, half-face, averaged
 // symmetric, full) on
@@ -218,9 +220,11 @@ int main(int argc, char* argv[])
     }
     else
     {
-      std::fprintf(stderr, "usage: CorrespondenceBenchmark [--quick] [--modes half-face,averaged,full] [--synthetic N] "
-                           "[--sliding MU] [--slidingLevel L] [--levels N] [--holding MU] [--qHolding MU] [--qSliding MU] [--qCells N] "
-                           "[--only KIND] [--rOnly]\n");
+      std::fprintf(
+        stderr,
+        "usage: CorrespondenceBenchmark [--quick] [--modes half-face,averaged,full] [--synthetic N] "
+        "[--sliding MU] [--slidingLevel L] [--levels N] [--holding MU] [--qHolding MU] [--qSliding MU] [--qCells N] "
+        "[--only KIND] [--rOnly]\n");
       return 2;
     }
   }
@@ -309,9 +313,9 @@ int main(int argc, char* argv[])
       subjects.push_back(w);
     }
 
-    std::map<std::string, std::vector<Row>> summary; // subject -> rows
-    std::vector<std::pair<std::string, Eigen::Vector3d>> atlasHeldOut;  // on the atlas's own CT
-    std::vector<Row> heldOutRows;                                     // headsq
+    std::map<std::string, std::vector<Row>> summary;                   // subject -> rows
+    std::vector<std::pair<std::string, Eigen::Vector3d>> atlasHeldOut; // on the atlas's own CT
+    std::vector<Row> heldOutRows;                                      // headsq
     {
       // The atlas's CT with the atlas's plane, as BuildFaceAtlas sees them: the rules find there the
       // atlas's own landmarks.
@@ -324,9 +328,9 @@ int main(int argc, char* argv[])
     }
     std::map<std::string, std::map<std::string, mmrep::FEMesh>> headsqModels; // mode -> kind -> model
     if (!only.empty())
-      subjects.erase(std::remove_if(subjects.begin(), subjects.end(),
-                                    [&](const Subject& s) { return s.kind.rfind(only, 0) != 0; }),
-                     subjects.end());
+      subjects.erase(
+        std::remove_if(subjects.begin(), subjects.end(), [&](const Subject& s) { return s.kind.rfind(only, 0) != 0; }),
+        subjects.end());
     for (auto& s : subjects)
     {
       Prepare(s, options);
@@ -375,7 +379,8 @@ int main(int argc, char* argv[])
           row.cells["skull half / whole"] = Num(skullHalf.mean) + " / " + Num(skullAll.mean);
           row.cells["lips Q half (mean / max) / whole"] =
             Num(lipsHalf.mean) + " / " + Num(lipsHalf.max, 2) + " / " + Num(lipsAll.mean);
-          row.values["skin"] = mode.halfFace || !mode.symmetric ? (mode.symmetric ? skinHalf.mean : skinAll.mean) : skinHalf.mean;
+          row.values["skin"] =
+            mode.halfFace || !mode.symmetric ? (mode.symmetric ? skinHalf.mean : skinAll.mean) : skinHalf.mean;
           row.values["skull"] = mode.symmetric ? skullHalf.mean : skullAll.mean;
           row.values["lips"] = mode.symmetric ? lipsHalf.mean : lipsAll.mean;
           row.values["lips max"] = mode.symmetric ? lipsHalf.max : lipsAll.max;
@@ -436,7 +441,8 @@ int main(int argc, char* argv[])
       for (const char* c : {"skin half / whole", "skull half / whole", "lips Q half (mean / max) / whole",
                             "control points (mean / max)", "min SJ", "waviness (mean / max)", "time R / Q (s)"})
         columns.push_back(c);
-      PrintTable(s.name + (truth ? ": node error vs truth on the fitted half, surface errors (mm)" : ": surface errors (mm)"),
+      PrintTable(s.name +
+                   (truth ? ": node error vs truth on the fitted half, surface errors (mm)" : ": surface errors (mm)"),
                  columns, rows);
       summary[s.name] = rows;
     }

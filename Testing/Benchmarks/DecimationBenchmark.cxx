@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Decimation benchmark (issue 17 item 4), run on demand: build/bin/DecimationBenchmark [ct.nrrd] [vertices]
 // The full skin of a CT (as SkinSkullSurfaces extracts it) decimated to `vertices` by VTK's
 // vtkQuadricDecimation (what SkinSkullSurfaces uses) and by OpenMesh's Decimater with ModQuadric and an

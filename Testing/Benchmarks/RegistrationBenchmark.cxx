@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // RegistrationBenchmark: the shipped face atlas registered (R, then the lips refinement Q) onto
 //   (a) headsq, a different real person: image-stage surfaces, estimated plane, shipped control points;
 //   (b) synthetic subjects made from cthead (the atlas's own CT) by SyntheticSubject warps (smooth
@@ -63,8 +65,7 @@ std::vector<std::pair<std::size_t, std::size_t>> MirrorPairs(const mmrep::FEMesh
   return pairs;
 }
 
-
-void Row(const char* what, const mmrep::SurfaceErrorStatistics& s)
+void Row(const char* what, const mmrep::SurfaceDistance& s)
 {
   std::printf("    %-26s mean %.3f  max %.3f  sigma %.3f mm (%zu nodes)\n", what, s.mean, s.max, s.sigma, s.count);
 }
@@ -107,9 +108,9 @@ Outcome RunSubject(const Subject& s, const mmrep::FEMesh& atlas, const mmrep::Pl
                                     std::pair<const char*, const mmrep::FEMesh*>{"after Q∘R", &q.mesh}})
   {
     std::printf("  %s\n", label);
-    Row("skin", mmrep::MeasureSurfaceError(mesh->nodes, skin, s.data.skin));
-    Row("skull", mmrep::MeasureSurfaceError(mesh->nodes, skull, s.data.skull));
-    Row("lips (all lips nodes)", mmrep::MeasureSurfaceError(mesh->nodes, lips, s.data.skin));
+    Row("skin", mmrep::MeasureSurfaceDistance(mesh->nodes, skin, s.data.skin));
+    Row("skull", mmrep::MeasureSurfaceDistance(mesh->nodes, skull, s.data.skull));
+    Row("lips (all lips nodes)", mmrep::MeasureSurfaceDistance(mesh->nodes, lips, s.data.skin));
   }
   Row("lips skin nodes, R", q.before.lips);
   Row("lips skin nodes, Q∘R", q.after.lips);
@@ -152,7 +153,8 @@ Outcome RunSubject(const Subject& s, const mmrep::FEMesh& atlas, const mmrep::Pl
                   label, sum / atlas.nodes.size(), worst, sumSkin / skin.size(), worstSkin, sumLips / lips.size(),
                   worstLips);
     }
-    std::printf("  node error vs truth after the similarity alone: all nodes mean %.3f mm\n", simSum / atlas.nodes.size());
+    std::printf("  node error vs truth after the similarity alone: all nodes mean %.3f mm\n",
+                simSum / atlas.nodes.size());
     // Muscle insertions (first and last point of every track) carried by Q∘R, as MuscleInference
     // does, against the truth F (issue 7's target: mean <= 1 mm).
     {
@@ -167,11 +169,10 @@ Outcome RunSubject(const Subject& s, const mmrep::FEMesh& atlas, const mmrep::Pl
           worst = std::max(worst, e);
           ++count;
         }
-      std::printf("  muscle insertions (track ends) vs truth after Q∘R: mean %.3f max %.3f mm (%zu points)\n", sum / count,
-                  worst, count);
+      std::printf("  muscle insertions (track ends) vs truth after Q∘R: mean %.3f max %.3f mm (%zu points)\n",
+                  sum / count, worst, count);
     }
-    const double angle =
-      std::acos(std::min(1.0, std::abs(s.data.plane.normal.dot(s.truePlane.normal)))) * 180.0 / M_PI;
+    const double angle = std::acos(std::min(1.0, std::abs(s.data.plane.normal.dot(s.truePlane.normal)))) * 180.0 / M_PI;
     // Offset: distance between the planes at the face (the control points' centroid, projected).
     Eigen::Vector3d c = Eigen::Vector3d::Zero();
     for (const auto& p : s.data.controlPoints)

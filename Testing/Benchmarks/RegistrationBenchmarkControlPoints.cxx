@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // PlaceSampleControlPoints: the five atlas control points of a head CT by the atlas's automatic
 // landmark rules (DetectFaceControlPoints), written as Slicer markups, with a QC picture.
 //
@@ -30,8 +32,9 @@ int main(int argc, char* argv[])
     const auto s = mmrep::bench::SubjectSurfacesFromCT(ct);
     std::cout << std::setprecision(6) << "thresholds skin " << s.thresholds.skin << ", bone " << s.thresholds.bone
               << "; skin " << s.skin->GetNumberOfPoints() << " vertices, skull " << s.skull->GetNumberOfPoints()
-              << "; skin bounds " << s.skin->GetBounds()[0] << " " << s.skin->GetBounds()[1] << " " << s.skin->GetBounds()[2] << " " << s.skin->GetBounds()[3] << " " << s.skin->GetBounds()[4] << " " << s.skin->GetBounds()[5]
-              << "\nplane: point " << s.symmetry.plane.point.transpose() << ", normal "
+              << "; skin bounds " << s.skin->GetBounds()[0] << " " << s.skin->GetBounds()[1] << " "
+              << s.skin->GetBounds()[2] << " " << s.skin->GetBounds()[3] << " " << s.skin->GetBounds()[4] << " "
+              << s.skin->GetBounds()[5] << "\nplane: point " << s.symmetry.plane.point.transpose() << ", normal "
               << s.symmetry.plane.normal.transpose() << ", RMS " << s.symmetry.rmsResidual << " mm\n";
     const auto cp = mmrep::DetectFaceControlPoints(s.skin, s.skull, s.symmetry.plane);
     for (const auto& l : cp.log)

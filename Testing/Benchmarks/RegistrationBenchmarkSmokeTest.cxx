@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Reduced registration benchmark as tests, on the real bundled CTs: the shipped control points
 // follow the atlas rules, and the shipped atlas registered onto headsq (a different person) is
 // non-folding, exactly symmetric, meets the control points, and Q leaves everything outside its
@@ -61,7 +63,8 @@ const Headsq& Data()
 TEST(RegistrationSmoke, ShippedControlPointsFollowTheAtlasRules)
 {
   // cthead: the atlas's own CT, so its control points are the atlas landmarks.
-  const auto atlasMarks = mmrep::ReadLandmarks(std::string(MMREP_SOURCE_DIR) + "/Resources/Atlas/FaceAtlasLandmarks.mrk.json");
+  const auto atlasMarks =
+    mmrep::ReadLandmarks(std::string(MMREP_SOURCE_DIR) + "/Resources/Atlas/FaceAtlasLandmarks.mrk.json");
   const auto cthead = mmrep::ReadLandmarks(kSample + "/cthead.ControlPoints.mrk.json");
   ASSERT_EQ(cthead.size(), atlasMarks.size());
   for (std::size_t i = 0; i < cthead.size(); ++i)
@@ -80,7 +83,7 @@ TEST(RegistrationSmoke, ShippedControlPointsFollowTheAtlasRules)
     EXPECT_EQ(detected.points[i].name, shipped[i].name);
     EXPECT_LT((detected.points[i].position - shipped[i].position).norm(), 1e-6) << shipped[i].name;
     // Every control point is a skin point (an exact ray hit on the triangles).
-    EXPECT_LT(mmrep::MeasureSurfaceError({shipped[i].position}, {0}, d.surfaces.skin).max, 1e-6) << shipped[i].name;
+    EXPECT_LT(mmrep::MeasureSurfaceDistance({shipped[i].position}, {0}, d.surfaces.skin).max, 1e-6) << shipped[i].name;
   }
   // Mid-sagittal points on the plane; the left points on the left.
   EXPECT_LT(std::abs(d.surfaces.symmetry.plane.SignedDistance(shipped[3].position)), 1e-9);
@@ -168,7 +171,7 @@ TEST(RegistrationSmoke, HeadsqAccuracy)
   }
   // Q keeps the skull nodes and the control points where R put them (pins).
   const auto& skull = d.atlas.nodeSets.at("skull");
-  const auto afterQ = mmrep::MeasureSurfaceError(d.q.mesh.nodes, skull, d.subject.skull);
+  const auto afterQ = mmrep::MeasureSurfaceDistance(d.q.mesh.nodes, skull, d.subject.skull);
   EXPECT_LT(afterQ.mean, r.skull.mean + 0.01);
   for (std::size_t i = 0; i < d.q.mesh.landmarks.size(); ++i)
     EXPECT_LT((d.q.mesh.landmarks[i].position - d.r.mesh.landmarks[i].position).norm(), 0.5)

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Subject surfaces of a head CT for the registration benchmark and the sample control points:
 // the image stage and the symmetry plane exactly as FaceModelPipeline and BuildFaceAtlas make them.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Benchmark sections shared by the benchmark programs. Each prints a table with one row per
 // implementation: best wall time over `repeats`, voxels per second, and ratio ours/theirs.
 #pragma once

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-License-Identifier: BSD-3-Clause
+# Copyright (c) 2026 MMRep developers (see LICENSE)
 # BuildStandAlone.sh CMAKE CTEST MODULE_SOURCE SCRATCH ITK_DIR [LAUNCHER]
 # Configures MODULE_SOURCE alone in a fresh SCRATCH folder against ITK_DIR, builds it and runs its
 # Saito-Toriwaki brute-force test there. Fails if the configure, the build or the test fails, or if the

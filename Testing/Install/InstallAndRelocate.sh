@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# Copyright (c) 2026 MMRep developers (see LICENSE)
 # InstallAndRelocate.sh cmake build-dir source-dir bin-dir cli-lib-dir data-dir "modules"
 set -euo pipefail
 cmake=$1 build=$2 src=$3 bindir=$4 libdir=$5 datadir=$6 modules=$7

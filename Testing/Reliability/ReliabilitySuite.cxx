@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The bad-input suite: each case of BadInputCases.h runs a module as a user would and checks what
 // the user is left with: the exit code, exactly one stderr line naming the culprit, and the case's
 // folder (inputs, earlier outputs, $TMPDIR) byte for byte as it was, with nothing added.
@@ -44,8 +46,8 @@ const fs::path& Fixtures()
     const std::string lps = "space: left-posterior-superior\nspace directions: (4,0,0) (0,4,0) (0,0,4)\n"
                             "space origin: (0,0,0)\nendian: little\nencoding: raw\n\n";
     // 2048^3 shorts declared, 4 kB present.
-    WriteFile(d / "big.nrrd", "NRRD0004\ntype: short\ndimension: 3\nsizes: 2048 2048 2048\n" + lps +
-                                  std::string(4000, '\0'));
+    WriteFile(d / "big.nrrd",
+              "NRRD0004\ntype: short\ndimension: 3\nsizes: 2048 2048 2048\n" + lps + std::string(4000, '\0'));
     // A float volume of air with one NaN voxel.
     std::vector<float> voxels(16 * 16 * 16, -1000.0f);
     voxels[5 + 16 * (6 + 16 * 7)] = std::numeric_limits<float>::quiet_NaN();
@@ -55,19 +57,22 @@ const fs::path& Fixtures()
     WriteFile(d / "field.nrrd", "NRRD0004\ntype: float\ndimension: 4\nsizes: 3 2 2 2\n"
                                 "kinds: vector domain domain domain\nspace: left-posterior-superior\n"
                                 "space directions: none (1,0,0) (0,1,0) (0,0,1)\nspace origin: (0,0,0)\n"
-                                "encoding: ascii\n\n" + std::string(24, '0').replace(0, 24, [] {
-                                  std::string zeros;
-                                  for (int i = 0; i < 24; ++i)
-                                    zeros += "0\n";
-                                  return zeros;
-                                }()));
-    const std::string points = R"(<Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 1 0</DataArray></Points>)";
+                                "encoding: ascii\n\n" +
+                                  std::string(24, '0').replace(0, 24, [] {
+                                    std::string zeros;
+                                    for (int i = 0; i < 24; ++i)
+                                      zeros += "0\n";
+                                    return zeros;
+                                  }()));
+    const std::string points =
+      R"(<Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 1 0</DataArray></Points>)";
     WriteFile(d / "bigvtu.vtu",
               R"(<?xml version="1.0"?>
 <VTKFile type="UnstructuredGrid" version="0.1" byte_order="LittleEndian">
   <UnstructuredGrid>
     <Piece NumberOfPoints="100000000000" NumberOfCells="1">
-      )" + points + R"(
+      )" + points +
+                R"(
       <Cells>
         <DataArray type="Int64" Name="connectivity" format="ascii">0 1 2</DataArray>
         <DataArray type="Int64" Name="offsets" format="ascii">3</DataArray>
@@ -82,7 +87,8 @@ const fs::path& Fixtures()
 <VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">
   <PolyData>
     <Piece NumberOfPoints="100000000000" NumberOfPolys="1">
-      )" + points + R"(
+      )" + points +
+                R"(
       <Polys>
         <DataArray type="Int64" Name="connectivity" format="ascii">0 1 2</DataArray>
         <DataArray type="Int64" Name="offsets" format="ascii">3</DataArray>
@@ -117,7 +123,8 @@ const fs::path& Fixtures()
       fs::resize_file(d / name, fs::file_size(d / name) / 2);
     }
     WriteFile(d / "badtype.mha", "ObjectType = Image\nNDims = 3\nDimSize = 4 4 4\nElementType = MET_FOO\n"
-                                 "ElementDataFile = LOCAL\n" + std::string(64, '\0'));
+                                 "ElementDataFile = LOCAL\n" +
+                                   std::string(64, '\0'));
     // The atlas with one landmark not a number; a surface cut short; a PLY without coordinates.
     auto atlas = mmrep::ReadFEMesh(kAtlasData + "FaceAtlas.vtu");
     atlas.landmarks.at(1).position.x() = std::numeric_limits<double>::quiet_NaN();
@@ -177,7 +184,8 @@ std::map<std::string, std::string> Snapshot(const fs::path& root)
   return entries;
 }
 
-std::string Differences(const std::map<std::string, std::string>& before, const std::map<std::string, std::string>& after)
+std::string Differences(const std::map<std::string, std::string>& before,
+                        const std::map<std::string, std::string>& after)
 {
   std::string d;
   for (const auto& [name, bytes] : before)
@@ -232,8 +240,8 @@ TEST_P(BadInput, OneLineNothingTouchedNothingLeft)
   std::string cmd = "cd " + Quote(dir.string()) + " && TMPDIR=" + Quote((dir / "tmp").string()) + " ";
   const char* display = std::getenv("DISPLAY");
   if (c.display && (display == nullptr || *display == '\0'))
-    cmd += "xvfb-run -a -n " + std::to_string(100 + ::getpid() % 20000) + " -f " + Quote((logs / "Xauthority").string()) +
-           " -s \"-screen 0 1600x1200x24 -noreset\" ";
+    cmd += "xvfb-run -a -n " + std::to_string(100 + ::getpid() % 20000) + " -f " +
+           Quote((logs / "Xauthority").string()) + " -s \"-screen 0 1600x1200x24 -noreset\" ";
   if (c.addressSpaceKiB > 0)
     cmd += "sh -c 'ulimit -v " + std::to_string(c.addressSpaceKiB) + " && exec \"$0\" \"$@\"' ";
   cmd += Quote(std::string(MMREP_BINARY_DIR) + "/bin/" + c.module);
@@ -252,7 +260,8 @@ TEST_P(BadInput, OneLineNothingTouchedNothingLeft)
   EXPECT_EQ(lines[0].rfind(c.module + ": error: ", 0), 0u) << lines[0];
   EXPECT_NE(lines[0].find(c.culprit), std::string::npos) << "culprit '" << c.culprit << "' not named: " << lines[0];
   // No toolkit internals: object addresses, ITK's and VTK's class prefixes, source locations.
-  EXPECT_FALSE(std::regex_search(lines[0], std::regex(R"(0x[0-9a-fA-F]{6,}|ITK ERROR|itk::|\bvtk[A-Z]\w* \(|\.(cxx|hxx):\d+)")))
+  EXPECT_FALSE(
+    std::regex_search(lines[0], std::regex(R"(0x[0-9a-fA-F]{6,}|ITK ERROR|itk::|\bvtk[A-Z]\w* \(|\.(cxx|hxx):\d+)")))
     << lines[0];
   EXPECT_EQ(Differences(before, Snapshot(dir)), "") << lines[0];
 }
@@ -266,25 +275,31 @@ TEST(PartialFieldOfView, ModelBuiltMissingRegionReported)
   const std::string common = Quote(std::string(MMREP_BINARY_DIR) + "/bin/FaceModelPipeline") + " " +
                              Quote((Fixtures() / "cropped.nrrd").string()) + " " +
                              Quote(kSampleData + "cthead.ControlPoints.mrk.json") + " --noPictures --outputDirectory ";
-  ASSERT_NE(std::system((common + Quote((dir / "refused").string()) + " > /dev/null 2> " + Quote((dir / "refused.err").string())).c_str()), 0);
+  ASSERT_NE(std::system(
+              (common + Quote((dir / "refused").string()) + " > /dev/null 2> " + Quote((dir / "refused.err").string()))
+                .c_str()),
+            0);
   const std::string refusal = Slurp(dir / "refused.err");
   std::smatch chin;
   ASSERT_TRUE(std::regex_search(refusal, chin, std::regex(R"(chin by \d+ mm)"))) << refusal;
   EXPECT_FALSE(fs::exists(dir / "refused"));
 
-  const int status = std::system((common + Quote((dir / "speaker").string()) + " --allowPartialFieldOfView > /dev/null 2> " +
-                                  Quote((dir / "err").string())).c_str());
+  const int status = std::system((common + Quote((dir / "speaker").string()) +
+                                  " --allowPartialFieldOfView > /dev/null 2> " + Quote((dir / "err").string()))
+                                   .c_str());
   ModuleRun run;
   run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   run.err = Slurp(dir / "err");
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const auto lines = run.ErrLines();
   ASSERT_EQ(lines.size(), 1u) << run.err;
-  EXPECT_EQ(lines[0].rfind("FaceModelPipeline: warning: partial model: the CT misses the " + chin.str(), 0), 0u) << lines[0];
+  EXPECT_EQ(lines[0].rfind("FaceModelPipeline: warning: partial model: the CT misses the " + chin.str(), 0), 0u)
+    << lines[0];
   const std::string report = Slurp(dir / "speaker" / "report.json");
   EXPECT_NE(report.find("\"complete\": false"), std::string::npos);
   EXPECT_NE(report.find("\"missing\": \"" + chin.str() + "\""), std::string::npos) << report.substr(0, 400);
-  EXPECT_NE(Slurp(dir / "speaker" / "report.md").find("**Partial model**: the CT misses the " + chin.str()), std::string::npos);
+  EXPECT_NE(Slurp(dir / "speaker" / "report.md").find("**Partial model**: the CT misses the " + chin.str()),
+            std::string::npos);
   // A real model: the atlas's mesh, read back.
   const auto model = mmrep::ReadFEMesh((dir / "speaker" / "model.vtu").string());
   EXPECT_EQ(model.elements.size(), mmrep::ReadFEMesh(kAtlasData + "FaceAtlas.vtu").elements.size());

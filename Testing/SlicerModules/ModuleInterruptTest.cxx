@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The executables interrupted as a user (Ctrl-C) or a job system (SIGTERM) does: the run stops at
 // its next progress poll with exit code 128 + signal, removes its staging folder and temporary files
 // (CalculiX's job folder in $TMPDIR included), leaves the inputs untouched; leftovers of runs that
@@ -47,13 +49,16 @@ Interrupted RunAndInterrupt(const std::string& module, const std::vector<std::st
   std::vector<std::string> strings = {std::string(MMREP_BINARY_DIR) + "/bin/" + module};
   strings.insert(strings.end(), args.begin(), args.end());
   std::vector<char*> argv;
-  for (auto& s : strings) argv.push_back(s.data());
+  for (auto& s : strings)
+    argv.push_back(s.data());
   argv.push_back(nullptr);
   std::vector<std::string> env = {"TMPDIR=" + tmpdir.string()};
   for (char** e = environ; *e; ++e)
-    if (std::string(*e).rfind("TMPDIR=", 0) != 0) env.emplace_back(*e);
+    if (std::string(*e).rfind("TMPDIR=", 0) != 0)
+      env.emplace_back(*e);
   std::vector<char*> envp;
-  for (auto& s : env) envp.push_back(s.data());
+  for (auto& s : env)
+    envp.push_back(s.data());
   envp.push_back(nullptr);
   pid_t pid = -1;
   EXPECT_EQ(::posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data()), 0);
@@ -81,7 +86,8 @@ Interrupted RunAndInterrupt(const std::string& module, const std::vector<std::st
 pid_t DeadPid()
 {
   const pid_t pid = ::fork();
-  if (pid == 0) ::_exit(0);
+  if (pid == 0)
+    ::_exit(0);
   ::waitpid(pid, nullptr, 0);
   return pid;
 }
@@ -117,9 +123,9 @@ TEST(ModuleInterrupt, FaceModelPipelineStopsOnSIGTERMAndCleansUp)
   const fs::path live = dir / (".speaker.partial-" + std::to_string(::getpid()) + "-other");
   fs::create_directories(live);
 
-  const auto run = RunAndInterrupt("FaceModelPipeline",
-                                   {ct, points, "--outputDirectory", (dir / "speaker").string(), "--noPictures"},
-                                   dir / "tmp", "Stage: registration", SIGTERM);
+  const auto run =
+    RunAndInterrupt("FaceModelPipeline", {ct, points, "--outputDirectory", (dir / "speaker").string(), "--noPictures"},
+                    dir / "tmp", "Stage: registration", SIGTERM);
   ASSERT_TRUE(run.triggered) << run.out;
   EXPECT_EQ(run.exitCode, 143) << run.out;
   EXPECT_EQ(run.out.find("Results in"), std::string::npos);
@@ -136,9 +142,9 @@ TEST(ModuleInterrupt, SIGINTStopsAModuleWithExitCode130AndNoOutput)
   // A stale temporary output of a dead run beside the outputs is removed by the next run.
   const fs::path stale = dir / ("skin.mmrep-tmp-" + std::to_string(DeadPid()) + "-0.vtp");
   std::ofstream(stale) << "partial";
-  const auto run = RunAndInterrupt("SkinSkullSurfaces",
-                                   {kSampleData + "/cthead.nrrd", (dir / "skin.vtp").string(), (dir / "skull.vtp").string()},
-                                   dir / "tmp", "<filter-progress>", SIGINT);
+  const auto run = RunAndInterrupt(
+    "SkinSkullSurfaces", {kSampleData + "/cthead.nrrd", (dir / "skin.vtp").string(), (dir / "skull.vtp").string()},
+    dir / "tmp", "<filter-progress>", SIGINT);
   ASSERT_TRUE(run.triggered) << run.out;
   EXPECT_EQ(run.exitCode, 130) << run.out;
   EXPECT_EQ(Entries(dir), (std::vector<std::string>{"tmp"}));

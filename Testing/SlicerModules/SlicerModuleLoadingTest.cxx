@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Loads every module's shared library the way Slicer's CLI factory does (dlopen, then the symbol
 // XMLModuleDescription or the function GetXMLModuleDescription, and ModuleEntryPoint), checks the
 // description against the executable's --xml and Slicer's schema, and runs modules in process with
@@ -44,7 +46,8 @@ struct Library
   }
   ~Library()
   {
-    if (handle) ::dlclose(handle);
+    if (handle)
+      ::dlclose(handle);
   }
   void* Symbol(const char* name) const { return handle ? ::dlsym(handle, name) : nullptr; }
   EntryPoint Entry() const { return reinterpret_cast<EntryPoint>(Symbol("ModuleEntryPoint")); }
@@ -62,7 +65,8 @@ int RunInProcess(const Library& lib, std::vector<std::string> args, ModuleProces
   args.push_back("--processinformationaddress");
   args.push_back(address);
   std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
+  for (auto& a : args)
+    argv.push_back(a.data());
   argv.push_back(nullptr);
   return lib.Entry()(static_cast<int>(args.size()), argv.data());
 }
@@ -82,7 +86,8 @@ extern "C" void Observe(void* data)
   o->progress.push_back(o->info->Progress);
   o->stage.push_back(o->info->StageProgress);
   o->messages.emplace_back(o->info->ProgressMessage);
-  if (o->info->Progress >= o->abortAt) o->info->Abort = 1;
+  if (o->info->Progress >= o->abortAt)
+    o->info->Abort = 1;
 }
 
 ModuleProcessInformation Block(Observed& observed)

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Test and benchmark helper: how far a registered atlas is from the truth, node by node, on the
 // fitted (left) half of the atlas: node groups (all, skin, lips, skull, muscle points, insertions),
 // their errors against a truth map (mean / p95 / max), surface errors of the half or the whole,
@@ -115,9 +117,9 @@ public:
     return SpreadOf(e);
   }
 
-  SurfaceErrorStatistics SurfaceError(const FEMesh& mesh, const std::string& set, vtkPolyData* surface, bool half) const
+  SurfaceDistance SurfaceError(const FEMesh& mesh, const std::string& set, vtkPolyData* surface, bool half) const
   {
-    return MeasureSurfaceError(mesh.nodes, half ? half_.at(set) : whole_.at(set), surface);
+    return MeasureSurfaceDistance(mesh.nodes, half ? half_.at(set) : whole_.at(set), surface);
   }
 
   std::pair<double, double> ControlPointError(const FEMesh& mesh, const std::vector<Landmark>& targets) const

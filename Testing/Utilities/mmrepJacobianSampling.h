@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Test and benchmark helper: the smallest det ∇ of an elastic transform's elastic part, sampled on
 // n³ cell centres of a box given in the transform's frame coordinates (each sample is mapped back to
 // input space through the transform's similarity, whose determinant is divided out).
@@ -24,7 +26,8 @@ inline double MinimumJacobianDeterminant(const ElasticTransform& t, const Eigen:
       for (int k = 0; k < n; ++k)
       {
         const Eigen::Vector3d u((i + 0.5) / n, (j + 0.5) / n, (k + 0.5) / n);
-        const Eigen::Vector3d x = preInverse * (t.ToWorld(frameLo + (frameHi - frameLo).cwiseProduct(u)) - t.preTranslation);
+        const Eigen::Vector3d x =
+          preInverse * (t.ToWorld(frameLo + (frameHi - frameLo).cwiseProduct(u)) - t.preTranslation);
         minDet = std::min(minDet, t.Jacobian(x).determinant() / preDet);
       }
   return minDet;

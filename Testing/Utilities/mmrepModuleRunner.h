@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Test helper: runs a module executable from build/bin and captures what a user would see.
 #pragma once
 
@@ -56,7 +58,8 @@ inline ModuleRun RunModuleExecutable(const std::string& module, const std::vecto
 {
   namespace fs = std::filesystem;
   static int counter = 0;
-  const fs::path dir = fs::temp_directory_path() / ("mmrep-run-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  const fs::path dir =
+    fs::temp_directory_path() / ("mmrep-run-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
   fs::create_directories(dir);
   std::string cmd;
   const char* display = std::getenv("DISPLAY");

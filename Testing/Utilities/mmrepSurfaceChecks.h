@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Test helper: topology checks of triangle surfaces with VTK's own filters (independent of ours).
 #pragma once
 

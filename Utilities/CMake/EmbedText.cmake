@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: BSD-3-Clause
+# Copyright (c) 2026 MMRep developers (see LICENSE)
 # cmake -DINPUT=file.xml -DOUTPUT=out.cxx -DSYMBOL=Name [-DSLICER_MODULE=ON] -P EmbedText.cmake
 # Writes a C++ source defining `extern const char SYMBOL[]` holding the file's exact bytes,
 # so a module's .xml is compiled in (single source of truth, no run-time file lookup).

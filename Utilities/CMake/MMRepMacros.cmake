@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: BSD-3-Clause
+# Copyright (c) 2026 MMRep developers (see LICENSE)
 # mmrep_embed_text(<target-var> INPUT <file> SYMBOL <name>)
 #   Adds a generated source to <target-var> that defines `const char <name>[]` = file contents.
 #   SLICER_MODULE: also exported as Slicer's `XMLModuleDescription` / `GetXMLModuleDescription()`.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Conversions keep geometry: ITK and VTK map every voxel index to the same physical point,
 // meshes keep vertices and faces in order through ITK and OpenMesh.
 #include "mmrepBridge.h"
@@ -19,18 +21,16 @@ namespace
 
 using ShortImage = itk::Image<short, 3>;
 
-template <typename TImage>
-std::size_t PixelCount(const TImage* image)
+template <typename TImage> std::size_t PixelCount(const TImage* image)
 {
   return image->GetLargestPossibleRegion().GetNumberOfPixels();
 }
 
-template <typename TImage>
-typename TImage::Pointer MakeImage()
+template <typename TImage> typename TImage::Pointer MakeImage()
 {
   auto image = TImage::New();
-  typename TImage::IndexType start = { { 3, -2, 5 } }; // non-zero start index
-  typename TImage::SizeType size = { { 9, 7, 5 } };
+  typename TImage::IndexType start = {{3, -2, 5}}; // non-zero start index
+  typename TImage::SizeType size = {{9, 7, 5}};
   image->SetRegions(typename TImage::RegionType(start, size));
   typename TImage::SpacingType spacing;
   spacing[0] = 0.7;
@@ -67,8 +67,7 @@ typename TImage::Pointer MakeImage()
   return image;
 }
 
-template <typename TPixel>
-void CheckImageRoundTrip()
+template <typename TPixel> void CheckImageRoundTrip()
 {
   using ImageType = itk::Image<TPixel, 3>;
   typename ImageType::Pointer image = MakeImage<ImageType>();
@@ -81,11 +80,11 @@ void CheckImageRoundTrip()
     {
       for (int i = 0; i < 9; i += 4)
       {
-        typename ImageType::IndexType idx = { { region.GetIndex()[0] + i, region.GetIndex()[1] + j,
-                                               region.GetIndex()[2] + k } };
+        typename ImageType::IndexType idx = {
+          {region.GetIndex()[0] + i, region.GetIndex()[1] + j, region.GetIndex()[2] + k}};
         typename ImageType::PointType itkPoint;
         image->TransformIndexToPhysicalPoint(idx, itkPoint);
-        const int ijk[3] = { static_cast<int>(idx[0]), static_cast<int>(idx[1]), static_cast<int>(idx[2]) };
+        const int ijk[3] = {static_cast<int>(idx[0]), static_cast<int>(idx[1]), static_cast<int>(idx[2])};
         double vtkPoint[3];
         vtk->TransformIndexToPhysicalPoint(ijk, vtkPoint);
         for (int a = 0; a < 3; ++a)
@@ -161,9 +160,18 @@ void ExpectSameSurface(vtkPolyData* a, vtkPolyData* b)
 
 } // namespace
 
-TEST(Bridge, ShortImageGeometryAndPixelsPreserved) { CheckImageRoundTrip<short>(); }
-TEST(Bridge, UCharImageGeometryAndPixelsPreserved) { CheckImageRoundTrip<unsigned char>(); }
-TEST(Bridge, FloatImageGeometryAndPixelsPreserved) { CheckImageRoundTrip<float>(); }
+TEST(Bridge, ShortImageGeometryAndPixelsPreserved)
+{
+  CheckImageRoundTrip<short>();
+}
+TEST(Bridge, UCharImageGeometryAndPixelsPreserved)
+{
+  CheckImageRoundTrip<unsigned char>();
+}
+TEST(Bridge, FloatImageGeometryAndPixelsPreserved)
+{
+  CheckImageRoundTrip<float>();
+}
 
 TEST(Bridge, VTKImageOfOtherScalarTypeIsCast)
 {
@@ -223,9 +231,8 @@ TEST(Bridge, OpenMeshRoundTripKeepsVerticesAndFaces)
   ASSERT_EQ(mesh.n_vertices(), static_cast<std::size_t>(sphere->GetNumberOfPoints()));
   ASSERT_EQ(mesh.n_faces(), static_cast<std::size_t>(sphere->GetNumberOfPolys()));
   // A closed sphere: Euler characteristic 2 and no boundary edges.
-  EXPECT_EQ(static_cast<long>(mesh.n_vertices()) - static_cast<long>(mesh.n_edges()) +
-              static_cast<long>(mesh.n_faces()),
-            2);
+  EXPECT_EQ(
+    static_cast<long>(mesh.n_vertices()) - static_cast<long>(mesh.n_edges()) + static_cast<long>(mesh.n_faces()), 2);
   for (const auto e : mesh.edges())
   {
     ASSERT_FALSE(mesh.is_boundary(e));
@@ -244,7 +251,7 @@ TEST(Bridge, OpenMeshRejectsOrCountsNonManifoldFaces)
   points->InsertNextPoint(0, -1, 0);
   points->InsertNextPoint(0, 0, 1);
   vtkNew<vtkCellArray> tris;
-  const vtkIdType t0[3] = { 0, 1, 2 }, t1[3] = { 1, 0, 3 }, t2[3] = { 0, 1, 4 };
+  const vtkIdType t0[3] = {0, 1, 2}, t1[3] = {1, 0, 3}, t2[3] = {0, 1, 4};
   tris->InsertNextCell(3, t0);
   tris->InsertNextCell(3, t1);
   tris->InsertNextCell(3, t2);

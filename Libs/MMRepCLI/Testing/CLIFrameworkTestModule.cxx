@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Test-only CLI module: writes every value it received (through the typed getters) to its output
 // report, so the framework can be checked end to end from the command line.
 #include "mmrepCLI.h"
@@ -14,8 +16,7 @@ namespace
 {
 using mmrep::cli::ModuleContext;
 
-template <typename T>
-std::string Join(const std::vector<T>& values)
+template <typename T> std::string Join(const std::vector<T>& values)
 {
   std::ostringstream s;
   s.precision(17);
@@ -28,20 +29,21 @@ void Body(ModuleContext& ctx)
 {
   const auto& a = ctx.args;
   const std::string failure = a.String("failure");
-  if (failure == "module") throw mmrep::cli::ModuleError("requested module failure");
-  if (failure == "std") throw std::out_of_range("requested std failure");
-  if (failure == "itk") itkGenericExceptionMacro("requested itk failure");
+  if (failure == "module")
+    throw mmrep::cli::ModuleError("requested module failure");
+  if (failure == "std")
+    throw std::out_of_range("requested std failure");
+  if (failure == "itk")
+    itkGenericExceptionMacro("requested itk failure");
 
   // Progress from several threads at once: the framework keeps it ordered and whole-line.
   ctx.progress.Start("Testing the CLI framework");
   std::vector<std::thread> workers;
   for (int t = 0; t < 4; ++t)
-    workers.emplace_back(
-        [&ctx, t]
-        {
-          for (int k = t; k <= 200; k += 4)
-            ctx.progress.ReportRange(0.0, 0.9, k / 200.0);
-        });
+    workers.emplace_back([&ctx, t] {
+      for (int k = t; k <= 200; k += 4)
+        ctx.progress.ReportRange(0.0, 0.9, k / 200.0);
+    });
   for (auto& w : workers)
     w.join();
 

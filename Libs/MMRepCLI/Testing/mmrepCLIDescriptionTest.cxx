@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // In-process tests of the framework pieces: description parsing, typed arguments, progress,
 // return parameters, atomic output and file extensions.
 #include "mmrepCLI.h"
@@ -84,7 +86,7 @@ TEST(CLIDescription, ParametersMatchXmllint)
                           "region",
                           "table"})
     EXPECT_TRUE(std::any_of(d.parameters.begin(), d.parameters.end(), [&](const Parameter& p) { return p.tag == tag; }))
-        << "the test module should declare a <" << tag << ">";
+      << "the test module should declare a <" << tag << ">";
 }
 
 TEST(CLIDescription, FlagsIndicesConstraintsEnumerations)
@@ -331,7 +333,7 @@ TEST(CLIAtomicOutput, MissingFolderIsNamed)
   catch (const ModuleError& e)
   {
     EXPECT_NE(std::string(e.what()).find((dir / "missing").string() + "' does not exist"), std::string::npos)
-        << e.what();
+      << e.what();
   }
   EXPECT_FALSE(fs::exists(dir / "missing"));
   EXPECT_THROW(AtomicOutput(dir.string()), ModuleError); // a folder is not a file

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // End-to-end tests: run the test module (executable and shared library) like Slicer does.
 #include "mmrepCLI.h"
 #include "mmrepCLITestUtilities.h"
@@ -34,7 +36,7 @@ Result RunModule(const fs::path& dir, const std::string& args)
 {
   const std::string out = (dir / "stdout.txt").string(), err = (dir / "stderr.txt").string();
   const std::string command =
-      "cd '" + dir.string() + "' && '" CLI_TEST_MODULE_EXE "' " + args + " >'" + out + "' 2>'" + err + "'";
+    "cd '" + dir.string() + "' && '" CLI_TEST_MODULE_EXE "' " + args + " >'" + out + "' 2>'" + err + "'";
   const int status = std::system(command.c_str());
   Result r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -97,10 +99,10 @@ TEST(CLIModule, ValuesReachTheBody)
   // build tree is, /tmp included).
   fs::create_directory(dir / "work");
   const Result r =
-      RunModule(dir, "in.nrrd report.txt m.vtk t.tfm tab.csv -i 4 --fraction 0.75 --scale -2.5 -v --label 'two words' "
-                     "--size 7,8 --weights 0.5 --spacing 0.2,0.3,0.4 --tags a,b,c --order 1 --ratio 1.5 "
-                     "--sigma 2.5 --mode accurate --workDir work --roi 1,2,3,4,5,6 "
-                     "--seedsRAS 10,-20.5,30 --seedsRAS -1,0,2 --seedLPS 1,2,3");
+    RunModule(dir, "in.nrrd report.txt m.vtk t.tfm tab.csv -i 4 --fraction 0.75 --scale -2.5 -v --label 'two words' "
+                   "--size 7,8 --weights 0.5 --spacing 0.2,0.3,0.4 --tags a,b,c --order 1 --ratio 1.5 "
+                   "--sigma 2.5 --mode accurate --workDir work --roi 1,2,3,4,5,6 "
+                   "--seedsRAS 10,-20.5,30 --seedsRAS -1,0,2 --seedLPS 1,2,3");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.err, "");
   auto report = ReadReport(dir / "report.txt");
@@ -209,8 +211,8 @@ TEST(CLIModule, ReturnParameterFile)
 {
   const fs::path dir = TestFolder();
   const Result r = RunModule(dir, "in report.txt" + kOthers +
-                                      " --mode accurate --scale 0.25 --spacing 1,2,3.5 --seedsRAS 1,2,3 "
-                                      "--seedsRAS 4,5,6 --returnparameterfile rp.txt");
+                                    " --mode accurate --scale 0.25 --spacing 1,2,3.5 --seedsRAS 1,2,3 "
+                                    "--seedsRAS 4,5,6 --returnparameterfile rp.txt");
   ASSERT_EQ(r.code, 0) << r.err;
   // checksum = scale + sum(spacing), in declaration order
   EXPECT_EQ(ReadFile(dir / "rp.txt"), "checksum = 6.75\nseedCount = 2\nmodeUsed = accurate\n");
@@ -259,16 +261,22 @@ void ExpectModuleFailure(const std::string& failure, const std::string& message)
   const fs::path dir = TestFolder();
   fs::create_directory(dir / "out");
   const Result r =
-      RunModule(dir, "in out/report.txt" + kOthers + " --failure " + failure + " --returnparameterfile out/rp.txt");
+    RunModule(dir, "in out/report.txt" + kOthers + " --failure " + failure + " --returnparameterfile out/rp.txt");
   EXPECT_EQ(r.code, 1);
   EXPECT_EQ(r.err, kPrefix + message + "\n");
   EXPECT_TRUE(fs::is_empty(dir / "out")) << "no output, no temporary, no return file after a failure";
 }
 } // namespace
 
-TEST(CLIModule, ModuleErrorIsExit1) { ExpectModuleFailure("module", "requested module failure"); }
+TEST(CLIModule, ModuleErrorIsExit1)
+{
+  ExpectModuleFailure("module", "requested module failure");
+}
 
-TEST(CLIModule, StdExceptionIsExit1) { ExpectModuleFailure("std", "requested std failure"); }
+TEST(CLIModule, StdExceptionIsExit1)
+{
+  ExpectModuleFailure("std", "requested std failure");
+}
 
 TEST(CLIModule, ItkExceptionIsExit1InWords) // no source location, no "ITK ERROR:" prefix
 {
@@ -280,13 +288,13 @@ TEST(CLIModule, FailureAfterWritingLeavesNoFile)
   const fs::path dir = TestFolder();
   fs::create_directory(dir / "out");
   const Result r =
-      RunModule(dir, "in out/report.vtu" + kOthers + " --failure afterWrite --returnparameterfile out/rp.txt");
+    RunModule(dir, "in out/report.vtu" + kOthers + " --failure afterWrite --returnparameterfile out/rp.txt");
   EXPECT_EQ(r.code, 1);
   ASSERT_EQ(Lines(r.err).size(), 1u) << r.err;
   // the message shows the temporary really was being written in the output folder
   EXPECT_TRUE(std::regex_match(
-      r.err, std::regex(kPrefix + R"(requested failure after writing 'out/report\.mmrep-tmp-[0-9]+-[0-9]+\.vtu'\n)")))
-      << r.err;
+    r.err, std::regex(kPrefix + R"(requested failure after writing 'out/report\.mmrep-tmp-[0-9]+-[0-9]+\.vtu'\n)")))
+    << r.err;
   EXPECT_TRUE(fs::is_empty(dir / "out"));
 }
 
@@ -296,7 +304,7 @@ TEST(CLIModule, MissingOutputFolderIsNamed)
   const Result r = RunModule(dir, "in nowhere/report.txt" + kOthers);
   EXPECT_EQ(r.code, 2); // refused from the command line, before the body runs
   EXPECT_EQ(r.err, kPrefix + "'outputFile' (argument 2): cannot write 'nowhere/report.txt': folder '" +
-                       (fs::weakly_canonical(dir) / "nowhere").string() + "' does not exist\n");
+                     (fs::weakly_canonical(dir) / "nowhere").string() + "' does not exist\n");
   EXPECT_FALSE(fs::exists(dir / "nowhere"));
 }
 
@@ -306,7 +314,7 @@ TEST(CLIModule, FailureAfterCommitPublishesNothing)
   fs::create_directory(dir / "out");
   std::ofstream(dir / "out" / "report.vtu") << "earlier result";
   const Result r =
-      RunModule(dir, "in out/report.vtu" + kOthers + " --failure afterCommit --returnparameterfile out/rp.txt");
+    RunModule(dir, "in out/report.vtu" + kOthers + " --failure afterCommit --returnparameterfile out/rp.txt");
   EXPECT_EQ(r.code, 1);
   EXPECT_EQ(r.err, kPrefix + "requested failure after committing the output\n");
   // The earlier result is as it was, no return parameters, no temporary left.
@@ -336,10 +344,12 @@ namespace
 int CallEntryPoint(const fs::path& dir, std::vector<std::string> args, std::string& err)
 {
   void* library = dlopen(CLI_TEST_MODULE_LIB, RTLD_NOW | RTLD_LOCAL);
-  if (!library) throw std::runtime_error(dlerror());
+  if (!library)
+    throw std::runtime_error(dlerror());
   using EntryPoint = int (*)(int, char*[]);
   auto entry = reinterpret_cast<EntryPoint>(dlsym(library, "ModuleEntryPoint"));
-  if (!entry) throw std::runtime_error("ModuleEntryPoint is not exported");
+  if (!entry)
+    throw std::runtime_error("ModuleEntryPoint is not exported");
   args.insert(args.begin(), CLI_TEST_MODULE_LIB); // Slicer passes the library location as argv[0]
   std::vector<char*> argv;
   for (std::string& a : args)
@@ -368,8 +378,8 @@ TEST(CLIModule, SharedLibraryExportsEntryPoint)
   const fs::path dir = TestFolder();
   std::string err;
   EXPECT_EQ(
-      CallEntryPoint(dir, {"in.nrrd", (dir / "report.txt").string(), "m", "t", "tab", "--seedsRAS", "1,2,3"}, err), 0)
-      << err;
+    CallEntryPoint(dir, {"in.nrrd", (dir / "report.txt").string(), "m", "t", "tab", "--seedsRAS", "1,2,3"}, err), 0)
+    << err;
   EXPECT_EQ(err, "");
   EXPECT_EQ(ReadReport(dir / "report.txt")["seedsRAS"], std::vector<std::string>{"-1,-2,3"});
 

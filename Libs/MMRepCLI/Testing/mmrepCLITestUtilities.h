@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Small helpers shared by the CLI framework tests.
 #pragma once
 
@@ -48,7 +50,7 @@ inline std::filesystem::path TestFolder()
 {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const auto dir =
-      std::filesystem::current_path() / (std::string("work-") + info->test_suite_name() + "-" + info->name());
+    std::filesystem::current_path() / (std::string("work-") + info->test_suite_name() + "-" + info->name());
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Boundary faces against VTK's own face definitions and surface filter.
 #include "mmrepBoundaryFaces.h"
 
@@ -55,7 +57,8 @@ Point3 Normal(const FEMesh& m, const BoundaryFace& f)
 {
   Point3 n = Point3::Zero();
   for (int k = 0; k < f.NodeCount(); ++k)
-    n += m.nodes[static_cast<std::size_t>(f.nodes[k])].cross(m.nodes[static_cast<std::size_t>(f.nodes[(k + 1) % f.NodeCount()])]);
+    n += m.nodes[static_cast<std::size_t>(f.nodes[k])].cross(
+      m.nodes[static_cast<std::size_t>(f.nodes[(k + 1) % f.NodeCount()])]);
   return n;
 }
 

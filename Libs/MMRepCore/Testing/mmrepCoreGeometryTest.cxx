@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Planes, node-to-surface distances and control-point matching against known truths.
 #include "mmrepControlPointMatch.h"
 #include "mmrepPlane.h"
@@ -102,8 +104,9 @@ TEST(CoreControlPoints, MatchedByNameInTheLandmarksOrder)
   EXPECT_EQ(targets[2], Point3(7, 7, 7));
   EXPECT_THROW(MatchControlPointsByName(atlas, {}), std::invalid_argument);
   EXPECT_THROW(MatchControlPointsByName({}, given), std::invalid_argument);
-  EXPECT_THROW(MatchControlPointsByName(atlas, {given[0], given[1]}), std::invalid_argument);           // B missing
-  EXPECT_THROW(MatchControlPointsByName(atlas, {given[0], given[1], given[2], given[1]}), std::invalid_argument); // twice
+  EXPECT_THROW(MatchControlPointsByName(atlas, {given[0], given[1]}), std::invalid_argument); // B missing
+  EXPECT_THROW(MatchControlPointsByName(atlas, {given[0], given[1], given[2], given[1]}),
+               std::invalid_argument); // twice
   EXPECT_THROW(MatchControlPointsByName(atlas, {given[0], given[1], given[2], {"D", Point3(0, 0, 0)}}),
                std::invalid_argument); // not an atlas landmark
   EXPECT_THROW(MatchControlPointsByName(atlas, {given[0], given[1], given[2], {"", Point3(0, 0, 0)}}),

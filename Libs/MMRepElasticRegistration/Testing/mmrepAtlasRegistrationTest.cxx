@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Registration of a synthetic symmetric atlas onto a subject warped by a known map: accuracy,
 // non-folding, exact symmetry, the displacement field, and the local refinement.
 #include "mmrepAtlasRegistration.h"
@@ -182,8 +184,8 @@ TEST(ElasticRegistration, DisplacementFieldReproducesTheTransform)
   std::cout << "displacement field vs transform: 1 mm grid " << coarse.between << " mm, 0.5 mm grid " << fine.between
             << " mm, at grid points " << fine.atNodes << " mm (|u| up to " << fine.largest << " mm)" << std::endl;
   EXPECT_GT(fine.largest, 1.0);
-  EXPECT_LT(fine.atNodes, 1e-4);               // float storage of u
-  EXPECT_LT(fine.between, 0.1);                // interpolation accuracy at 0.5 mm …
+  EXPECT_LT(fine.atNodes, 1e-4);                 // float storage of u
+  EXPECT_LT(fine.between, 0.1);                  // interpolation accuracy at 0.5 mm …
   EXPECT_LT(fine.between, 0.5 * coarse.between); // … and it converges (trilinear: O(spacing²))
 }
 
@@ -281,7 +283,8 @@ TEST(ElasticReport, MarkdownTableMatchesTheStages)
     std::vector<std::string> cells;
     std::istringstream cellStream(line.substr(1));
     for (std::string cell; std::getline(cellStream, cell, '|');)
-      cells.push_back(cell.substr(cell.find_first_not_of(' '), cell.find_last_not_of(' ') - cell.find_first_not_of(' ') + 1));
+      cells.push_back(
+        cell.substr(cell.find_first_not_of(' '), cell.find_last_not_of(' ') - cell.find_first_not_of(' ') + 1));
     rows[cells[0]] = cells;
   }
   auto fmt = [](double v) {
@@ -290,10 +293,12 @@ TEST(ElasticReport, MarkdownTableMatchesTheStages)
     return std::string(b);
   };
   ASSERT_TRUE(rows.count("similarity") && rows.count("elastic") && rows.count("distance maps") &&
-              rows.count("refinement (Q∘R)")) << md;
+              rows.count("refinement (Q∘R)"))
+    << md;
   for (const char* name : {"similarity", "elastic"})
   {
-    const auto& st = *std::find_if(report.stages.begin(), report.stages.end(), [&](const auto& s) { return s.name == name; });
+    const auto& st =
+      *std::find_if(report.stages.begin(), report.stages.end(), [&](const auto& s) { return s.name == name; });
     const auto& r = rows[name];
     ASSERT_EQ(r.size(), 14u) << md;
     EXPECT_EQ(r[1], fmt(st.skin.mean));

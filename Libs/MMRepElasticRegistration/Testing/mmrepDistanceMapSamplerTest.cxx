@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Trilinear sampling of a distance map: exact on linear fields (any direction matrix), gradient
 // equal to the analytic one, and the continuation outside the map's box.
 #include "mmrepDistanceMapSampler.h"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Synthetic atlas and subject with a known truth for the elastic registration tests.
 //
 // Atlas: a face-like patch of an ellipsoid head (front, θ ∈ [−60°, 60°], φ ∈ [−40°, 40°]), one
@@ -26,13 +28,17 @@ namespace mmrep::elastictest
 {
 
 constexpr double kPi = 3.14159265358979323846;
-inline double Rad(double d) { return d * kPi / 180.0; }
+inline double Rad(double d)
+{
+  return d * kPi / 180.0;
+}
 
 inline Eigen::Vector3d EllipsoidPoint(double thetaDeg, double phiDeg, const Eigen::Vector3d& radii)
 {
   const double t = Rad(thetaDeg), p = Rad(phiDeg);
   const Eigen::Vector3d d(std::sin(t) * std::cos(p), -std::cos(t) * std::cos(p), std::sin(p)); // anterior = −y
-  return d / std::sqrt(std::pow(d.x() / radii.x(), 2) + std::pow(d.y() / radii.y(), 2) + std::pow(d.z() / radii.z(), 2));
+  return d /
+         std::sqrt(std::pow(d.x() / radii.x(), 2) + std::pow(d.y() / radii.y(), 2) + std::pow(d.z() / radii.z(), 2));
 }
 
 inline const Eigen::Vector3d& SkinRadii()
@@ -49,7 +55,7 @@ inline const Eigen::Vector3d& SkullRadii()
 struct SyntheticAtlas
 {
   FEMesh mesh;
-  Plane plane; // x = 0
+  Plane plane;                                  // x = 0
   std::vector<std::pair<int, int>> mirrorPairs; // (node, mirror node), i > 0 columns
 };
 
@@ -100,10 +106,10 @@ inline SyntheticAtlas MakeAtlas(int halfColumns = 20, int rows = 31)
   a.mesh.nodeSets["lips"] = lips;
   a.mesh.nodeSets["midsagittal"] = mid;
   const std::vector<std::pair<std::string, Eigen::Vector2d>> cps = {{"LeftEyeInnerCorner", {10, 20}},
-                                                                   {"LeftEyeOuterCorner", {30, 18}},
-                                                                   {"LeftLipCorner", {20, -24}},
-                                                                   {"UpperLipCenter", {0, -20}},
-                                                                   {"LowerLipCenter", {0, -29}}};
+                                                                    {"LeftEyeOuterCorner", {30, 18}},
+                                                                    {"LeftLipCorner", {20, -24}},
+                                                                    {"UpperLipCenter", {0, -20}},
+                                                                    {"LowerLipCenter", {0, -29}}};
   for (const auto& [name, tp] : cps)
   {
     Eigen::Vector3d p = EllipsoidPoint(tp.x(), tp.y(), SkinRadii());
@@ -121,9 +127,9 @@ inline SyntheticAtlas MakeAtlas(int halfColumns = 20, int rows = 31)
 struct Truth
 {
   double scale = 1.04;
-  Eigen::Matrix3d rotation = (Eigen::AngleAxisd(Rad(8), Eigen::Vector3d::UnitZ()) *
-                              Eigen::AngleAxisd(Rad(6), Eigen::Vector3d::UnitX()))
-                               .toRotationMatrix();
+  Eigen::Matrix3d rotation =
+    (Eigen::AngleAxisd(Rad(8), Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(Rad(6), Eigen::Vector3d::UnitX()))
+      .toRotationMatrix();
   Eigen::Vector3d translation{5, -3, 8};
   double sigma = 35;
   // Bumps (centre, vector): a mirrored pair and one on the plane, so that W(Mx) = M W(x).
@@ -150,7 +156,8 @@ struct Truth
 // Triangulated patch of the ellipsoid (θ ∈ ±100°, φ ∈ ±65°, 1° steps) mapped by `truth`.
 inline vtkSmartPointer<vtkPolyData> MakeSurface(const Eigen::Vector3d& radii, const Truth& truth, double stepDeg = 1.0)
 {
-  const int nt = static_cast<int>(std::lround(200 / stepDeg)) + 1, np = static_cast<int>(std::lround(130 / stepDeg)) + 1;
+  const int nt = static_cast<int>(std::lround(200 / stepDeg)) + 1,
+            np = static_cast<int>(std::lround(130 / stepDeg)) + 1;
   vtkNew<vtkPoints> pts;
   for (int j = 0; j < np; ++j)
     for (int i = 0; i < nt; ++i)

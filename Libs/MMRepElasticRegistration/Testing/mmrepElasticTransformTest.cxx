@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The elementary step: C1 bump, exact gradient bound, non-folding, bucketed replay, Jacobian.
 #include "mmrepElasticTransform.h"
 
@@ -29,7 +31,7 @@ TEST(ElasticBump, IsC1AcrossTheSupportBoundary)
   for (double t = -1.2; t <= 1.2; t += 1e-3)
   {
     const double fd = (ElasticBump(t + eps) - ElasticBump(t - eps)) / (2 * eps);
-    EXPECT_NEAR(ElasticBumpDerivative(t), fd, 1e-5) << t; // FD truncation: 3ε²/2ε at |t| = 1
+    EXPECT_NEAR(ElasticBumpDerivative(t), fd, 1e-5) << t;                // FD truncation: 3ε²/2ε at |t| = 1
     EXPECT_LT(std::abs(ElasticBumpDerivative(t) - previous), 1e-2) << t; // |b''| ≤ 6: steps of 1e-3 move b' ≤ 6e-3
     previous = ElasticBumpDerivative(t);
   }
@@ -65,8 +67,8 @@ TEST(ElasticBump, GradientBoundIsExactAndStepsAtTheBoundDoNotFold)
         for (int k = -n; k <= n; ++k)
         {
           Eigen::Vector3d g;
-          ElasticTransform::Bump(Eigen::Vector3d(i * h.x() / n, j * h.y() / n, k * h.z() / n), Eigen::Vector3d::Zero(), h,
-                                 &g);
+          ElasticTransform::Bump(Eigen::Vector3d(i * h.x() / n, j * h.y() / n, k * h.z() / n), Eigen::Vector3d::Zero(),
+                                 h, &g);
           sampled = std::max(sampled, g.norm());
         }
     EXPECT_LE(sampled, L * (1 + 1e-12));
@@ -122,8 +124,9 @@ ElasticTransform RandomTransform(bool symmetric, unsigned seed)
       std::uniform_int_distribution<int> node(0, level.cells);
       ElasticStep step;
       const int ix = node(rng);
-      step.node = Eigen::Vector3d(symmetric ? (ix - level.cells / 2) * level.h.x() : level.boxMin.x() + ix * level.h.x(),
-                                  level.boxMin.y() + node(rng) * level.h.y(), level.boxMin.z() + node(rng) * level.h.z());
+      step.node =
+        Eigen::Vector3d(symmetric ? (ix - level.cells / 2) * level.h.x() : level.boxMin.x() + ix * level.h.x(),
+                        level.boxMin.y() + node(rng) * level.h.y(), level.boxMin.z() + node(rng) * level.h.z());
       step.delta = 0.5 * maxStep * Eigen::Vector3d(u(rng), u(rng), u(rng)).normalized();
       step.mirrored = symmetric && step.node.x() != 0;
       if (symmetric && !step.mirrored)

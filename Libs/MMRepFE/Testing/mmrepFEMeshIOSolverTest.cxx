@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Solver formats checked by the real tools: CalculiX solves the .inp, Gmsh loads and converts the
 // .msh, and the .feb is parsed as XML and its element orientation checked.
 #include "mmrepFEMeshIO.h"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // .vtu / .vtk reading and writing: exact round trips, foreign grids, error reporting.
 #include "mmrepFEMeshIO.h"
 #include "mmrepFETestMesh.h"
@@ -29,8 +31,7 @@ namespace
 {
 
 // Expects fn to throw std::runtime_error whose single-line message names `path` and contains `what`.
-template <class Fn>
-void ExpectFileError(Fn fn, const std::string& path, const std::string& what)
+template <class Fn> void ExpectFileError(Fn fn, const std::string& path, const std::string& what)
 {
   try
   {
@@ -196,7 +197,7 @@ TEST(FEMeshIO, ReadsPlainGridWithoutMMRepArrays)
   // A hexahedron, a wedge and a line written by VTK itself, float points, ASCII, no MMRep arrays.
   const auto dir = mmrep::testing::ScratchDir("FEMeshIO");
   vtkNew<vtkPoints> points; // float by default
-  const double coords[10][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1},
+  const double coords[10][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},      {0, 0, 1},
                                 {1, 0, 1}, {1, 1, 1}, {0, 1, 1}, {0.1f, 0.5, 2}, {2.5, 0.3, 0.7}};
   for (const auto& c : coords)
     points->InsertNextPoint(c);
@@ -285,8 +286,8 @@ TEST(FEMeshIO, InconsistentFieldDataIsRejected)
   {
     // A cable list that no longer matches the track points.
     auto grid = ToVTK(mesh);
-    auto* cables = vtkIntArray::SafeDownCast(
-      grid->GetFieldData()->GetAbstractArray("MMRep.Muscle.orbicularis%20oris.Cables"));
+    auto* cables =
+      vtkIntArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("MMRep.Muscle.orbicularis%20oris.Cables"));
     ASSERT_NE(cables, nullptr);
     cables->SetValue(0, 9);
     try
@@ -306,7 +307,8 @@ TEST(FEMeshIO, InconsistentFieldDataIsRejected)
   }
   {
     auto grid = ToVTK(mesh);
-    auto* force = vtkDataArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("MMRep.Muscle.orbicularis%20oris.MaximumForce"));
+    auto* force = vtkDataArray::SafeDownCast(
+      grid->GetFieldData()->GetAbstractArray("MMRep.Muscle.orbicularis%20oris.MaximumForce"));
     ASSERT_NE(force, nullptr);
     force->SetTuple1(0, -1);
     EXPECT_THROW(FromVTK(grid), std::runtime_error);

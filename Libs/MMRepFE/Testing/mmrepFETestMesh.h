@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Small FE model used by the FE I/O tests: a 2x1x3 hexahedral block in three tissue layers, a
 // wedge and a tetrahedron glued to its sides, two cable muscles embedded in solids, node sets,
 // element sets (one empty) and landmarks. Names contain spaces, dots, '%' and non-ASCII bytes on
@@ -12,7 +14,10 @@ namespace mmrep::testing
 inline const Point3 kTestMeshOffset(1.0 / 3.0, 1.4142135623730951, -3.141592653589793);
 
 // Node index of hex grid point (i, j, k), i in 0..2 (x, 10 mm), j in 0..1 (y, 8 mm), k in 0..3 (z, 3 mm).
-inline std::int32_t GridNode(int i, int j, int k) { return static_cast<std::int32_t>(i + 3 * (j + 2 * k)); }
+inline std::int32_t GridNode(int i, int j, int k)
+{
+  return static_cast<std::int32_t>(i + 3 * (j + 2 * k));
+}
 
 inline FEMesh MakeTestMesh()
 {
@@ -28,7 +33,7 @@ inline FEMesh MakeTestMesh()
       Element e;
       e.type = ElementType::Hexahedron;
       e.layer = layerOfK[k];
-      e.nodes = {GridNode(i, 0, k), GridNode(i + 1, 0, k), GridNode(i + 1, 1, k), GridNode(i, 1, k),
+      e.nodes = {GridNode(i, 0, k),     GridNode(i + 1, 0, k),     GridNode(i + 1, 1, k),     GridNode(i, 1, k),
                  GridNode(i, 0, k + 1), GridNode(i + 1, 0, k + 1), GridNode(i + 1, 1, k + 1), GridNode(i, 1, k + 1)};
       mesh.elements.push_back(e); // elements 0..5: index = i + 2k
     }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Helpers shared by the FE I/O tests: fresh scratch folders, exact mesh comparison, running tools.
 #pragma once
 
@@ -52,7 +54,10 @@ inline CommandResult Run(const std::string& command, const std::filesystem::path
   return result;
 }
 
-inline bool SameBits(const Point3& a, const Point3& b) { return std::memcmp(a.data(), b.data(), 3 * sizeof(double)) == 0; }
+inline bool SameBits(const Point3& a, const Point3& b)
+{
+  return std::memcmp(a.data(), b.data(), 3 * sizeof(double)) == 0;
+}
 
 // Everything must match exactly: bit patterns of doubles, orders, names.
 inline void ExpectSameMesh(const FEMesh& expected, const FEMesh& actual)

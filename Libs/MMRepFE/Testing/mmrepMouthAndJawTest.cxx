@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The mouth slit (close / reopen, facing surfaces, lip gap) and the jaw's rotation, on small meshes
 // whose answers are known by hand.
 #include "mmrepJaw.h"
@@ -42,7 +44,8 @@ FEMesh TwoLips()
         for (auto& n : e.nodes)
           if (twin.count(n))
             n = twin[n];
-      (z == 0 ? mesh.elementSets[kUpperLipSet] : mesh.elementSets[kLowerLipSet]).push_back(static_cast<std::int32_t>(mesh.elements.size()));
+      (z == 0 ? mesh.elementSets[kUpperLipSet] : mesh.elementSets[kLowerLipSet])
+        .push_back(static_cast<std::int32_t>(mesh.elements.size()));
       mesh.elements.push_back(e);
     }
   auto& upper = mesh.nodeSets[kUpperLipContactSet];
@@ -170,8 +173,8 @@ TEST(Jaw, OpeningRotatesTheMandibleAwayFromTheMaxilla)
   for (int n = 4; n < 8; ++n)
   {
     const Point3 p = mesh.nodes[static_cast<std::size_t>(n)], q = open * p;
-    EXPECT_NEAR(q.x(), 0.0, 1e-12);                              // about the x axis
-    EXPECT_NEAR(q.norm(), p.norm(), 1e-9);                       // a rotation about the axis through 0
+    EXPECT_NEAR(q.x(), 0.0, 1e-12);        // about the x axis
+    EXPECT_NEAR(q.norm(), p.norm(), 1e-9); // a rotation about the axis through 0
     EXPECT_NEAR(std::acos(p.normalized().dot(q.normalized())) * 180 / M_PI, 10.0, 1e-9);
   }
   // Anterior is -y here: the chin (y < 0, z < 0) moves down and back, away from the maxilla.

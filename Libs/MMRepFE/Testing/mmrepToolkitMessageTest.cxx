@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // ToolkitMessage on the texts ITK 5.2, VTK 9.1 and MetaIO really produce (taken from their output
 // for a truncated NRRD, an unknown MetaImage type, a short MetaImage block and a cut .vtp).
 #include "mmrepToolkitMessage.h"

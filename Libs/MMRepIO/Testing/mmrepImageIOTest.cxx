@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Volume reading/writing: sample CTs against an independent zlib decoding of the NRRD files,
 // format round trips, DICOM series geometry, and clear errors for bad input.
 #include "mmrepImageIO.h"
@@ -183,7 +185,7 @@ TEST(ImageIO, NrrdToMhaToNiftiKeepsPixelsAndGeometry)
   original->SetDirection(Rotation(0.3, -0.2));
 
   CTImage::Pointer current = original;
-  for (const char* name : { "a.mha", "b.nii.gz", "c.nii", "d.nrrd", "e.mhd" })
+  for (const char* name : {"a.mha", "b.nii.gz", "c.nii", "d.nrrd", "e.mhd"})
   {
     const std::string path = (dir / name).string();
     mmrep::WriteImage(current.GetPointer(), path);
@@ -200,7 +202,7 @@ TEST(ImageIO, FloatAndLabelImagesRoundTrip)
 {
   const fs::path dir = mmrep::test::ScratchDir();
   auto f = mmrep::FloatImage::New();
-  mmrep::FloatImage::SizeType size = { { 7, 5, 3 } };
+  mmrep::FloatImage::SizeType size = {{7, 5, 3}};
   f->SetRegions(size);
   f->Allocate();
   auto label = itk::Image<unsigned char, 3>::New();
@@ -275,8 +277,7 @@ TEST(ImageIO, DicomSeriesOfLeftHandedVolumeKeepsPhysicalVoxels)
   EXPECT_NEAR(back->GetDirection()[2][2], 1.0, 1e-6);
   // Every voxel of the result sits at the physical point of the same-valued input voxel.
   std::size_t mismatches = 0;
-  for (itk::ImageRegionConstIteratorWithIndex<CTImage> it(back, back->GetLargestPossibleRegion()); !it.IsAtEnd();
-       ++it)
+  for (itk::ImageRegionConstIteratorWithIndex<CTImage> it(back, back->GetLargestPossibleRegion()); !it.IsAtEnd(); ++it)
   {
     CTImage::PointType p;
     back->TransformIndexToPhysicalPoint(it.GetIndex(), p);
@@ -301,7 +302,7 @@ TEST(ImageIO, TwoDimensionalImageThrows)
   const fs::path dir = mmrep::test::ScratchDir();
   using Image2 = itk::Image<short, 2>;
   auto slice = Image2::New();
-  Image2::SizeType size = { { 8, 8 } };
+  Image2::SizeType size = {{8, 8}};
   slice->SetRegions(size);
   slice->Allocate();
   slice->FillBuffer(7);

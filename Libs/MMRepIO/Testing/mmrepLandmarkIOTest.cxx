@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Landmark files: round trips in both coordinate systems, raw file contents, Slicer variants.
 #include "mmrepLandmarkIO.h"
 #include "mmrepTestDir.h"
@@ -20,10 +22,10 @@ namespace
 
 std::vector<Landmark> Sample()
 {
-  return { { "nasion", { 1.25, -80.5, 42.125 } },
-           { "subnasale", { -0.3333333333333333, -95.75, 10.0 } },
-           { "pogonion, soft", { 3.0e-3, -102.0, -40.875 } }, // comma exercises CSV quoting
-           { "cheilion \"left\"", { 27.5, -78.0, -5.5 } } };
+  return {{"nasion", {1.25, -80.5, 42.125}},
+          {"subnasale", {-0.3333333333333333, -95.75, 10.0}},
+          {"pogonion, soft", {3.0e-3, -102.0, -40.875}}, // comma exercises CSV quoting
+          {"cheilion \"left\"", {27.5, -78.0, -5.5}}};
 }
 
 void ExpectSame(const std::vector<Landmark>& a, const std::vector<Landmark>& b)
@@ -104,10 +106,22 @@ void CheckFcsv(CoordinateSystem system)
 
 } // namespace
 
-TEST(LandmarkIO, MarkupsJsonRoundTripLPS) { CheckJson(CoordinateSystem::LPS); }
-TEST(LandmarkIO, MarkupsJsonRoundTripRAS) { CheckJson(CoordinateSystem::RAS); }
-TEST(LandmarkIO, FcsvRoundTripLPS) { CheckFcsv(CoordinateSystem::LPS); }
-TEST(LandmarkIO, FcsvRoundTripRAS) { CheckFcsv(CoordinateSystem::RAS); }
+TEST(LandmarkIO, MarkupsJsonRoundTripLPS)
+{
+  CheckJson(CoordinateSystem::LPS);
+}
+TEST(LandmarkIO, MarkupsJsonRoundTripRAS)
+{
+  CheckJson(CoordinateSystem::RAS);
+}
+TEST(LandmarkIO, FcsvRoundTripLPS)
+{
+  CheckFcsv(CoordinateSystem::LPS);
+}
+TEST(LandmarkIO, FcsvRoundTripRAS)
+{
+  CheckFcsv(CoordinateSystem::RAS);
+}
 
 TEST(LandmarkIO, ExplicitFormatOverridesExtension)
 {

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Surface round trips through every supported format, checked triangle by triangle.
 #include "mmrepSurfaceIO.h"
 #include "mmrepTestDir.h"
@@ -121,17 +123,32 @@ void ExpectThrowsNaming(const std::function<void()>& f, const std::string& path,
 
 } // namespace
 
-TEST(SurfaceIO, RoundTripVtp) { RoundTrip("vtp"); }
-TEST(SurfaceIO, RoundTripLegacyVtk) { RoundTrip("vtk"); }
-TEST(SurfaceIO, RoundTripStl) { RoundTrip("stl"); }
-TEST(SurfaceIO, RoundTripPly) { RoundTrip("ply"); }
-TEST(SurfaceIO, RoundTripObj) { RoundTrip("obj"); }
+TEST(SurfaceIO, RoundTripVtp)
+{
+  RoundTrip("vtp");
+}
+TEST(SurfaceIO, RoundTripLegacyVtk)
+{
+  RoundTrip("vtk");
+}
+TEST(SurfaceIO, RoundTripStl)
+{
+  RoundTrip("stl");
+}
+TEST(SurfaceIO, RoundTripPly)
+{
+  RoundTrip("ply");
+}
+TEST(SurfaceIO, RoundTripObj)
+{
+  RoundTrip("obj");
+}
 
 TEST(SurfaceIO, DoublePrecisionFormatsAreExact)
 {
   const fs::path dir = mmrep::test::ScratchDir();
   vtkSmartPointer<vtkPolyData> original = TestSurface();
-  for (const char* ext : { "vtp", "vtk" })
+  for (const char* ext : {"vtp", "vtk"})
   {
     const std::string path = (dir / (std::string("s.") + ext)).string();
     mmrep::WriteSurface(original, path);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // A fresh scratch folder per test inside the build tree.
 #pragma once
 
@@ -15,7 +17,7 @@ inline std::filesystem::path ScratchDir()
 {
   const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const std::filesystem::path dir = std::filesystem::path(MMREP_BINARY_DIR) / "Testing" / "Temporary" /
-    (std::string(info->test_suite_name()) + "." + info->name());
+                                    (std::string(info->test_suite_name()) + "." + info->name());
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

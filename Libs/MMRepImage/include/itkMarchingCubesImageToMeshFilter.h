@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #ifndef itkMarchingCubesImageToMeshFilter_h
 #define itkMarchingCubesImageToMeshFilter_h
 
@@ -78,29 +80,25 @@ protected:
   MarchingCubesImageToMeshFilter();
   ~MarchingCubesImageToMeshFilter() override = default;
 
-  void
-  GenerateInputRequestedRegion() override;
-  void
-  GenerateData() override;
-  void
-  PrintSelf(std::ostream & os, Indent indent) const override;
+  void GenerateInputRequestedRegion() override;
+  void GenerateData() override;
+  void PrintSelf(std::ostream& os, Indent indent) const override;
 
 private:
   // Runs the three passes on a dense nx*ny*nz block of values whose voxel (0,0,0) has continuous index `start`.
-  void
-  Contour(const InputPixelType * values, const std::array<SizeValueType, 3> & size, const std::array<double, 3> & start);
+  void Contour(const InputPixelType* values, const std::array<SizeValueType, 3>& size,
+               const std::array<double, 3>& start);
   // Continuous index relative to `start` -> physical point, from the input's origin, spacing and direction.
-  MarchingCubesDetail::IndexToPhysical
-  IndexToPhysicalMap(const std::array<double, 3> & start);
+  MarchingCubesDetail::IndexToPhysical IndexToPhysicalMap(const std::array<double, 3>& start);
 
-  double m_IsoValue{ 0.0 };
-  bool   m_PadBoundary{ false };
-  bool   m_CompactCells{ true };
+  double m_IsoValue{0.0};
+  bool m_PadBoundary{false};
+  bool m_CompactCells{true};
 };
 } // namespace itk
 
 #ifndef ITK_MANUAL_INSTANTIATION
-#  include "itkMarchingCubesImageToMeshFilter.hxx"
+#include "itkMarchingCubesImageToMeshFilter.hxx"
 #endif
 
 #endif

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #ifndef itkMarchingCubesImageToMeshFilter_hxx
 #define itkMarchingCubesImageToMeshFilter_hxx
 
@@ -27,12 +29,11 @@ MarchingCubesImageToMeshFilter<TInputImage, TOutputMesh>::MarchingCubesImageToMe
 }
 
 template <typename TInputImage, typename TOutputMesh>
-void
-MarchingCubesImageToMeshFilter<TInputImage, TOutputMesh>::GenerateInputRequestedRegion()
+void MarchingCubesImageToMeshFilter<TInputImage, TOutputMesh>::GenerateInputRequestedRegion()
 {
   Superclass::GenerateInputRequestedRegion();
   // The surface needs every voxel.
-  auto * input = const_cast<InputImageType *>(this->GetInput());
+  auto* input = const_cast<InputImageType*>(this->GetInput());
   if (input)
   {
     input->SetRequestedRegionToLargestPossibleRegion();
@@ -40,10 +41,9 @@ MarchingCubesImageToMeshFilter<TInputImage, TOutputMesh>::GenerateInputRequested
 }
 
 template <typename TInputImage, typename TOutputMesh>
-void
-MarchingCubesImageToMeshFilter<TInputImage, TOutputMesh>::GenerateData()
+void MarchingCubesImageToMeshFilter<TInputImage, TOutputMesh>::GenerateData()
 {
-  const InputImageType * input = this->GetInput();
+  const InputImageType* input = this->GetInput();
   if (!input)
   {
     itkExceptionMacro(<< "no input image");
@@ -55,16 +55,16 @@ MarchingCubesImageToMeshFilter<TInputImage, TOutputMesh>::GenerateData()
   this->GetOutput()->Initialize();
   this->UpdateProgress(0.0f);
 
-  const auto                   region = input->GetBufferedRegion();
+  const auto region = input->GetBufferedRegion();
   std::array<SizeValueType, 3> size;
-  std::array<double, 3>        start;
+  std::array<double, 3> start;
   for (unsigned int d = 0; d < 3; ++d)
   {
     size[d] = region.GetSize(d);
     start[d] = static_cast<double>(region.GetIndex(d));
   }
-  const InputPixelType * values = input->GetBufferPointer();
-  const SizeValueType    numberOfVoxels = region.GetNumberOfPixels();
+  const InputPixelType* values = input->GetBufferPointer();
+  const SizeValueType numberOfVoxels = region.GetNumberOfPixels();
 
   if (!m_PadBoundary || numberOfVoxels == 0)
   {
@@ -85,79 +85,71 @@ MarchingCubesImageToMeshFilter<TInputImage, TOutputMesh>::GenerateData()
                         << " is not above the lowest value of the pixel type, so no padding value lies outside");
     }
   }
-  const std::array<SizeValueType, 3> padded{ { size[0] + 2, size[1] + 2, size[2] + 2 } };
+  const std::array<SizeValueType, 3> padded{{size[0] + 2, size[1] + 2, size[2] + 2}};
   std::vector<InputPixelType> buffer(padded[0] * padded[1] * padded[2], static_cast<InputPixelType>(padValue));
   for (SizeValueType k = 0; k < size[2]; ++k)
   {
     for (SizeValueType j = 0; j < size[1]; ++j)
     {
-      std::copy_n(values + size[0] * (j + size[1] * k),
-                  size[0],
+      std::copy_n(values + size[0] * (j + size[1] * k), size[0],
                   buffer.data() + 1 + padded[0] * ((j + 1) + padded[1] * (k + 1)));
     }
   }
-  this->Contour(buffer.data(), padded, { { start[0] - 1.0, start[1] - 1.0, start[2] - 1.0 } });
+  this->Contour(buffer.data(), padded, {{start[0] - 1.0, start[1] - 1.0, start[2] - 1.0}});
   this->UpdateProgress(1.0f);
 }
 
 template <typename TInputImage, typename TOutputMesh>
-void
-MarchingCubesImageToMeshFilter<TInputImage, TOutputMesh>::Contour(const InputPixelType *               values,
-                                                                  const std::array<SizeValueType, 3> & size,
-                                                                  const std::array<double, 3> &        start)
+void MarchingCubesImageToMeshFilter<TInputImage, TOutputMesh>::Contour(const InputPixelType* values,
+                                                                       const std::array<SizeValueType, 3>& size,
+                                                                       const std::array<double, 3>& start)
 {
   using namespace MarchingCubesDetail;
   using PointsContainer = typename OutputMeshType::PointsContainer;
   using CellsContainer = typename OutputMeshType::CellsContainer;
   static_assert(std::is_same<typename PointsContainer::STLContainerType, std::vector<PointType>>::value &&
-                  std::is_same<typename CellsContainer::STLContainerType, std::vector<CellType *>>::value,
+                  std::is_same<typename CellsContainer::STLContainerType, std::vector<CellType*>>::value,
                 "MarchingCubesImageToMeshFilter writes VectorContainer points and cells (default mesh traits)");
   using T = InputPixelType;
   using CompactBlock = CompactTriangleCellBlock<CellType>;
 
-  OutputMeshType * output = this->GetOutput();
-  const SizeT       nx = size[0];
-  const SizeT       ny = size[1];
-  const SizeT       nz = size[2];
-  if (nx < 2 || ny < 2 || nz < 2)
-  {
-    return; // no voxel, no surface
-  }
+  OutputMeshType* output = this->GetOutput();
+  const SizeT nx = size[0];
+  const SizeT ny = size[1];
+  const SizeT nz = size[2];
   const double iso = m_IsoValue;
-
   T threshold{};
-  if (!ClassificationThreshold<T>(iso, threshold))
+  if (nx < 2 || ny < 2 || nz < 2 || !ClassificationThreshold<T>(iso, threshold))
   {
-    return; // nothing inside
+    return; // no voxel, or nothing inside: no surface
   }
 
   const SizeT numberOfRows = ny * nz; // grid row r = j + ny * k: the points (0..nx-1, j, k)
-  Rows        rows(nx - 1, numberOfRows);
+  Rows rows(nx - 1, numberOfRows);
   const SizeT nex = rows.nex;
   // Per row: cut x-, y- and z-edges it owns (edges leaving its points towards +x, +y, +z).
   std::vector<Id> edgeCount(3 * numberOfRows);
   // Per row with j < ny-1 and k < nz-1: triangles of the voxel row whose lower corner row it is.
   std::vector<Id> triangleCount(numberOfRows, 0);
 
-  const auto &                  cases = MarchingCubesTables::GetCases();
+  const auto& cases = MarchingCubesTables::GetCases();
   const std::array<std::uint8_t, 256> trianglesPerCase = TrianglesPerCase(cases);
 
-  MultiThreaderBase * threader = this->GetMultiThreader();
+  MultiThreaderBase* threader = this->GetMultiThreader();
   // Eight slabs of slices per requested work unit (one slab if one work unit is requested): the pool's threads
   // then balance the uneven slices between them and cope with a busy machine. The output does not depend on it.
   const SizeT workUnits = this->GetNumberOfWorkUnits();
-  threader->SetNumberOfWorkUnits(static_cast<ThreadIdType>(
-    workUnits <= 1 ? 1 : std::min<SizeT>({ nz, 8 * workUnits, SizeT{ ITK_MAX_THREADS } })));
+  threader->SetNumberOfWorkUnits(
+    static_cast<ThreadIdType>(workUnits <= 1 ? 1 : std::min<SizeT>({nz, 8 * workUnits, SizeT{ITK_MAX_THREADS}})));
 
   // Pass 1: classify the x-edges of every row, count the cut ones and trim.
   threader->ParallelizeArray(
-    0,
-    nz,
+    0, nz,
     [&rows, &edgeCount, values, nx, ny, nex, threshold, iso](SizeT k) {
       for (SizeT r = ny * k; r < ny * (k + 1); ++r)
       {
-        edgeCount[3 * r] =
-          ClassifyAndTrimRow<T>(values + nx * r, rows.edgeCase.get() + nex * r, nex, threshold, iso, rows.xL[r], rows.xR[r]);
+        edgeCount[3 * r] = ClassifyAndTrimRow<T>(values + nx * r, rows.edgeCase.get() + nex * r, nex, threshold, iso,
+                                                 rows.xL[r], rows.xR[r]);
       }
     },
     nullptr);
@@ -165,8 +157,7 @@ MarchingCubesImageToMeshFilter<TInputImage, TOutputMesh>::Contour(const InputPix
 
   // Pass 2: count cut y- and z-edges per row and triangles per voxel row.
   threader->ParallelizeArray(
-    0,
-    nz,
+    0, nz,
     [&rows, &edgeCount, &triangleCount, &trianglesPerCase, ny, nz](SizeT k) {
       for (SizeT j = 0; j < ny; ++j)
       {
@@ -197,18 +188,22 @@ MarchingCubesImageToMeshFilter<TInputImage, TOutputMesh>::Contour(const InputPix
   const unsigned int second = IsMirroring(this->GetInput()->GetDirection()) ? 2 : 1;
 
   // Pass 3: the points of each row, then the triangles of each voxel row.
-  const SliceWriter<T, PointType, CellType> writer{ values, nx, ny, nz, iso, rows,
-                                                    edgeCount.data(), pointOffset.data(), triangleOffset.data(),
-                                                    cases, this->IndexToPhysicalMap(start), second, 3 - second,
-                                                    points->CastToSTLContainer().data(),
-                                                    cells->CastToSTLContainer().data(), block.get() };
+  // One argument per line would make this initialisation 17 lines.
+  // clang-format off
+  const SliceWriter<T, PointType, CellType> writer{
+    values, nx, ny, nz, iso, rows, edgeCount.data(), pointOffset.data(), triangleOffset.data(), cases,
+    this->IndexToPhysicalMap(start), second, 3 - second, points->CastToSTLContainer().data(),
+    cells->CastToSTLContainer().data(), block.get()};
+  // clang-format on
   if (m_CompactCells)
   {
-    threader->ParallelizeArray(0, nz, [&writer](SizeT k) { writer.template WriteSlice<true>(k); }, nullptr);
+    threader->ParallelizeArray(
+      0, nz, [&writer](SizeT k) { writer.template WriteSlice<true>(k); }, nullptr);
   }
   else
   {
-    threader->ParallelizeArray(0, nz, [&writer](SizeT k) { writer.template WriteSlice<false>(k); }, nullptr);
+    threader->ParallelizeArray(
+      0, nz, [&writer](SizeT k) { writer.template WriteSlice<false>(k); }, nullptr);
   }
 
   output->SetPoints(points);
@@ -226,9 +221,9 @@ MarchingCubesImageToMeshFilter<TInputImage, TOutputMesh>::Contour(const InputPix
 
 template <typename TInputImage, typename TOutputMesh>
 MarchingCubesDetail::IndexToPhysical
-MarchingCubesImageToMeshFilter<TInputImage, TOutputMesh>::IndexToPhysicalMap(const std::array<double, 3> & start)
+MarchingCubesImageToMeshFilter<TInputImage, TOutputMesh>::IndexToPhysicalMap(const std::array<double, 3>& start)
 {
-  const InputImageType *               input = this->GetInput();
+  const InputImageType* input = this->GetInput();
   MarchingCubesDetail::IndexToPhysical map;
   for (unsigned int a = 0; a < 3; ++a)
   {
@@ -246,8 +241,7 @@ MarchingCubesImageToMeshFilter<TInputImage, TOutputMesh>::IndexToPhysicalMap(con
 }
 
 template <typename TInputImage, typename TOutputMesh>
-void
-MarchingCubesImageToMeshFilter<TInputImage, TOutputMesh>::PrintSelf(std::ostream & os, Indent indent) const
+void MarchingCubesImageToMeshFilter<TInputImage, TOutputMesh>::PrintSelf(std::ostream& os, Indent indent) const
 {
   Superclass::PrintSelf(os, indent);
   os << indent << "IsoValue: " << m_IsoValue << std::endl;

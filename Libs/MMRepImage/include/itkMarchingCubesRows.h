@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #ifndef itkMarchingCubesRows_h
 #define itkMarchingCubesRows_h
 
@@ -25,8 +27,7 @@ using Id = IdentifierType;
 using SizeT = SizeValueType;
 
 // x-edge code: bit 0 = class of the lower point, bit 1 = class of the upper point; the edge is cut when they differ.
-inline unsigned int
-Crossed(unsigned int code)
+inline unsigned int Crossed(unsigned int code)
 {
   return (code ^ (code >> 1)) & 1U;
 }
@@ -39,8 +40,7 @@ constexpr bool WordScan = true;
 #endif
 constexpr std::uint64_t LowBits = 0x0101010101010101ULL;
 
-inline std::uint64_t
-Load8(const std::uint8_t * p)
+inline std::uint64_t Load8(const std::uint8_t* p)
 {
   std::uint64_t w;
   std::memcpy(&w, p, sizeof(w));
@@ -48,16 +48,13 @@ Load8(const std::uint8_t * p)
 }
 
 // Bit 8q set when byte q of w is the code of a cut edge.
-inline std::uint64_t
-CrossedMask(std::uint64_t w)
+inline std::uint64_t CrossedMask(std::uint64_t w)
 {
   return (w ^ (w >> 1)) & LowBits;
 }
 
 // Calls f(i) for every cut x-edge i in [first, last), in increasing i.
-template <typename F>
-void
-ForEachCrossedEdge(const std::uint8_t * __restrict ec, SizeT first, SizeT last, F && f)
+template <typename F> void ForEachCrossedEdge(const std::uint8_t* __restrict ec, SizeT first, SizeT last, F&& f)
 {
   SizeT i = first;
   if constexpr (WordScan)
@@ -80,8 +77,7 @@ ForEachCrossedEdge(const std::uint8_t * __restrict ec, SizeT first, SizeT last, 
 }
 
 template <typename T>
-void
-ClassifyRow(const T * __restrict s, std::uint8_t * __restrict ec, SizeT nex, T threshold, double iso)
+void ClassifyRow(const T* __restrict s, std::uint8_t* __restrict ec, SizeT nex, T threshold, double iso)
 {
   if constexpr (std::is_integral<T>::value)
   {
@@ -96,8 +92,8 @@ ClassifyRow(const T * __restrict s, std::uint8_t * __restrict ec, SizeT nex, T t
     (void)threshold;
     for (SizeT i = 0; i < nex; ++i)
     {
-      ec[i] = static_cast<std::uint8_t>((static_cast<double>(s[i]) >= iso) |
-                                        ((static_cast<double>(s[i + 1]) >= iso) << 1));
+      ec[i] =
+        static_cast<std::uint8_t>((static_cast<double>(s[i]) >= iso) | ((static_cast<double>(s[i + 1]) >= iso) << 1));
     }
   }
 }
@@ -106,45 +102,30 @@ ClassifyRow(const T * __restrict s, std::uint8_t * __restrict ec, SizeT nex, T t
 struct Rows
 {
   Rows(SizeT numberOfXEdges, SizeT numberOfRows)
-    : nex(numberOfXEdges)
-    , edgeCase(new std::uint8_t[numberOfXEdges * numberOfRows])
-    , xL(numberOfRows)
-    , xR(numberOfRows)
-  {}
+      : nex(numberOfXEdges), edgeCase(new std::uint8_t[numberOfXEdges * numberOfRows]), xL(numberOfRows),
+        xR(numberOfRows)
+  {
+  }
 
-  SizeT                      nex = 0; // x-edges per row (nx - 1)
+  SizeT nex = 0;                            // x-edges per row (nx - 1)
   std::unique_ptr<std::uint8_t[]> edgeCase; // x-edge codes, row after row (not zeroed: pass 1 writes all)
-  std::vector<SizeT>         xL; // intersected x-edges of a row lie in [xL, xR); outside, its points share a class
-  std::vector<SizeT>         xR;
+  std::vector<SizeT> xL; // intersected x-edges of a row lie in [xL, xR); outside, its points share a class
+  std::vector<SizeT> xR;
 
-  const std::uint8_t *
-  Codes(SizeT r) const
-  {
-    return edgeCase.get() + nex * r;
-  }
-  unsigned int
-  FirstClass(SizeT r) const
-  {
-    return Codes(r)[0] & 1U;
-  }
-  unsigned int
-  LastClass(SizeT r) const
-  {
-    return Codes(r)[nex - 1] >> 1;
-  }
+  const std::uint8_t* Codes(SizeT r) const { return edgeCase.get() + nex * r; }
+  unsigned int FirstClass(SizeT r) const { return Codes(r)[0] & 1U; }
+  unsigned int LastClass(SizeT r) const { return Codes(r)[nex - 1] >> 1; }
   // Points [lo, hi] where rows a and b may differ in class (the cut y- or z-edges between them); false if none.
-  bool
-  PairRange(SizeT a, SizeT b, SizeT & lo, SizeT & hi) const
+  bool PairRange(SizeT a, SizeT b, SizeT& lo, SizeT& hi) const
   {
     lo = FirstClass(a) != FirstClass(b) ? 0 : std::min(xL[a], xL[b]);
     hi = LastClass(a) != LastClass(b) ? nex : std::max(xR[a], xR[b]);
     return lo <= hi;
   }
   // Voxels [L, R) of the voxel row with corner row r (rows r, r+1, r+ny, r+ny+1) whose case may be non-trivial.
-  void
-  VoxelRange(SizeT r, SizeT ny, SizeT & L, SizeT & R) const
+  void VoxelRange(SizeT r, SizeT ny, SizeT& L, SizeT& R) const
   {
-    const SizeT   rows[4] = { r, r + 1, r + ny, r + ny + 1 };
+    const SizeT rows[4] = {r, r + 1, r + ny, r + ny + 1};
     unsigned int first = 0;
     unsigned int last = 0;
     L = nex;
@@ -167,11 +148,11 @@ struct Rows
   }
 };
 
-inline Id
-CountCrossedPairs(const std::uint8_t * __restrict a, const std::uint8_t * __restrict b, SizeT lo, SizeT hi, SizeT nex)
+inline Id CountCrossedPairs(const std::uint8_t* __restrict a, const std::uint8_t* __restrict b, SizeT lo, SizeT hi,
+                            SizeT nex)
 {
   std::uint32_t count = 0;
-  const SizeT    end = std::min(hi + 1, nex);
+  const SizeT end = std::min(hi + 1, nex);
   for (SizeT i = lo; i < end; ++i)
   {
     count += (a[i] ^ b[i]) & 1U;
@@ -185,11 +166,11 @@ CountCrossedPairs(const std::uint8_t * __restrict a, const std::uint8_t * __rest
 
 // Calls f(i) for every point i in [lo, hi] where rows a and b differ, in increasing i.
 template <typename F>
-void
-ForEachCrossedPair(const std::uint8_t * __restrict a, const std::uint8_t * __restrict b, SizeT lo, SizeT hi, SizeT nex, F && f)
+void ForEachCrossedPair(const std::uint8_t* __restrict a, const std::uint8_t* __restrict b, SizeT lo, SizeT hi,
+                        SizeT nex, F&& f)
 {
   const SizeT end = std::min(hi + 1, nex);
-  SizeT       i = lo;
+  SizeT i = lo;
   if constexpr (WordScan)
   {
     for (; i + 8 <= end; i += 8)
@@ -213,14 +194,9 @@ ForEachCrossedPair(const std::uint8_t * __restrict a, const std::uint8_t * __res
   }
 }
 
-inline Id
-CountTriangles(const std::uint8_t * __restrict e0,
-               const std::uint8_t * __restrict e1,
-               const std::uint8_t * __restrict e2,
-               const std::uint8_t * __restrict e3,
-               SizeT                            L,
-               SizeT                            R,
-               const std::uint8_t * __restrict trianglesPerCase)
+inline Id CountTriangles(const std::uint8_t* __restrict e0, const std::uint8_t* __restrict e1,
+                         const std::uint8_t* __restrict e2, const std::uint8_t* __restrict e3, SizeT L, SizeT R,
+                         const std::uint8_t* __restrict trianglesPerCase)
 {
   std::uint32_t count = 0;
   for (SizeT i = L; i < R; ++i)
@@ -232,9 +208,7 @@ CountTriangles(const std::uint8_t * __restrict e0,
 
 // Classification is value >= iso. For integer pixels the rows compare against ceil(iso) in the pixel type (same
 // result, and the comparison vectorises); false when no value of T reaches iso.
-template <typename T>
-bool
-ClassificationThreshold(double iso, T & threshold)
+template <typename T> bool ClassificationThreshold(double iso, T& threshold)
 {
   if constexpr (std::is_integral<T>::value)
   {
@@ -243,8 +217,8 @@ ClassificationThreshold(double iso, T & threshold)
     {
       return false;
     }
-    threshold = c <= static_cast<double>(std::numeric_limits<T>::lowest()) ? std::numeric_limits<T>::lowest()
-                                                                            : static_cast<T>(c);
+    threshold =
+      c <= static_cast<double>(std::numeric_limits<T>::lowest()) ? std::numeric_limits<T>::lowest() : static_cast<T>(c);
   }
   return true;
 }
@@ -252,8 +226,7 @@ ClassificationThreshold(double iso, T & threshold)
 // Pass 1 on one row: classify its x-edges into ec, trim the uniform stretches at both ends ([xL, xR) holds
 // every cut edge; xL = nex, xR = 0 when none) and return the number of cut x-edges.
 template <typename T>
-Id
-ClassifyAndTrimRow(const T * s, std::uint8_t * ec, SizeT nex, T threshold, double iso, SizeT & xL, SizeT & xR)
+Id ClassifyAndTrimRow(const T* s, std::uint8_t* ec, SizeT nex, T threshold, double iso, SizeT& xL, SizeT& xR)
 {
   ClassifyRow<T>(s, ec, nex, threshold, iso);
   SizeT first = 0;
@@ -292,38 +265,30 @@ ClassifyAndTrimRow(const T * s, std::uint8_t * ec, SizeT nex, T threshold, doubl
 
 // Pass 2 on row r = j + ny k: its cut y- and z-edges (edgeCount[3r+1], [3r+2]) and the triangles of the voxel row
 // whose lower corner row it is (triangleCount[r], only for j < ny-1 and k < nz-1).
-inline void
-CountRow(const Rows &                 rows,
-         SizeT                        j,
-         SizeT                        k,
-         SizeT                        ny,
-         SizeT                        nz,
-         const std::uint8_t *         trianglesPerCase,
-         Id *                         edgeCount,
-         Id *                         triangleCount)
+inline void CountRow(const Rows& rows, SizeT j, SizeT k, SizeT ny, SizeT nz, const std::uint8_t* trianglesPerCase,
+                     Id* edgeCount, Id* triangleCount)
 {
   const SizeT nex = rows.nex;
   const SizeT r = j + ny * k;
-  SizeT       lo, hi;
-  edgeCount[3 * r + 1] =
-    (j + 1 < ny && rows.PairRange(r, r + 1, lo, hi)) ? CountCrossedPairs(rows.Codes(r), rows.Codes(r + 1), lo, hi, nex) : 0;
-  edgeCount[3 * r + 2] =
-    (k + 1 < nz && rows.PairRange(r, r + ny, lo, hi)) ? CountCrossedPairs(rows.Codes(r), rows.Codes(r + ny), lo, hi, nex) : 0;
+  SizeT lo, hi;
+  edgeCount[3 * r + 1] = (j + 1 < ny && rows.PairRange(r, r + 1, lo, hi))
+                           ? CountCrossedPairs(rows.Codes(r), rows.Codes(r + 1), lo, hi, nex)
+                           : 0;
+  edgeCount[3 * r + 2] = (k + 1 < nz && rows.PairRange(r, r + ny, lo, hi))
+                           ? CountCrossedPairs(rows.Codes(r), rows.Codes(r + ny), lo, hi, nex)
+                           : 0;
   if (j + 1 < ny && k + 1 < nz)
   {
     SizeT L, R;
     rows.VoxelRange(r, ny, L, R);
-    triangleCount[r] = CountTriangles(
-      rows.Codes(r), rows.Codes(r + 1), rows.Codes(r + ny), rows.Codes(r + ny + 1), L, R, trianglesPerCase);
+    triangleCount[r] = CountTriangles(rows.Codes(r), rows.Codes(r + 1), rows.Codes(r + ny), rows.Codes(r + ny + 1), L,
+                                      R, trianglesPerCase);
   }
 }
 // Prefix sums over rows: row r owns points [pointOffset[r], pointOffset[r+1]) and triangles
 // [triangleOffset[r], triangleOffset[r+1]).
-inline void
-RowOffsets(const std::vector<Id> & edgeCount,
-           const std::vector<Id> & triangleCount,
-           std::vector<Id> &       pointOffset,
-           std::vector<Id> &       triangleOffset)
+inline void RowOffsets(const std::vector<Id>& edgeCount, const std::vector<Id>& triangleCount,
+                       std::vector<Id>& pointOffset, std::vector<Id>& triangleOffset)
 {
   const SizeT numberOfRows = triangleCount.size();
   pointOffset.assign(numberOfRows + 1, 0);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #ifndef itkMarchingCubesSliceWriter_h
 #define itkMarchingCubesSliceWriter_h
 
@@ -21,9 +23,7 @@ struct IndexToPhysical
   std::array<double, 9> matrix;
   std::array<double, 3> origin;
 
-  template <typename TPoint>
-  void
-  operator()(TPoint & p, double x, double y, double z) const
+  template <typename TPoint> void operator()(TPoint& p, double x, double y, double z) const
   {
     using CoordRep = typename TPoint::ValueType;
     for (unsigned int a = 0; a < 3; ++a)
@@ -34,9 +34,7 @@ struct IndexToPhysical
 };
 
 // True when the direction matrix mirrors (negative determinant): triangles then take the other corner order.
-template <typename TMatrix>
-bool
-IsMirroring(const TMatrix & D)
+template <typename TMatrix> bool IsMirroring(const TMatrix& D)
 {
   const double det = D[0][0] * (D[1][1] * D[2][2] - D[1][2] * D[2][1]) -
                      D[0][1] * (D[1][0] * D[2][2] - D[1][2] * D[2][0]) +
@@ -45,8 +43,7 @@ IsMirroring(const TMatrix & D)
 }
 
 // Number of triangles of each of the 256 cases (pass 2 sums them per voxel row).
-inline std::array<std::uint8_t, 256>
-TrianglesPerCase(const std::array<MarchingCubesTables::Case, 256> & cases)
+inline std::array<std::uint8_t, 256> TrianglesPerCase(const std::array<MarchingCubesTables::Case, 256>& cases)
 {
   std::array<std::uint8_t, 256> count;
   for (unsigned int c = 0; c < 256; ++c)
@@ -56,30 +53,27 @@ TrianglesPerCase(const std::array<MarchingCubesTables::Case, 256> & cases)
   return count;
 }
 
-template <typename T, typename TPoint, typename TCell>
-struct SliceWriter
+template <typename T, typename TPoint, typename TCell> struct SliceWriter
 {
   using CompactBlock = CompactTriangleCellBlock<TCell>;
   using PointIdentifier = typename TCell::PointIdentifier;
 
-  const T *                                 values;
-  SizeT                                     nx, ny, nz;
-  double                                    iso;
-  const Rows &                              rows;
-  const Id *                                edgeCount;
-  const Id *                                pointOffset;
-  const Id *                                triangleOffset;
-  const std::array<MarchingCubesTables::Case, 256> & cases;
-  IndexToPhysical                           toPhysical;
-  unsigned int                              second; // triangle corner order: 1, 2 (or 2, 1 when mirrored)
-  unsigned int                              third;
-  TPoint *                                  pointArray;
-  TCell **                                  cellArray;
-  CompactBlock *                            block;
+  const T* values;
+  SizeT nx, ny, nz;
+  double iso;
+  const Rows& rows;
+  const Id* edgeCount;
+  const Id* pointOffset;
+  const Id* triangleOffset;
+  const std::array<MarchingCubesTables::Case, 256>& cases;
+  IndexToPhysical toPhysical;
+  unsigned int second; // triangle corner order: 1, 2 (or 2, 1 when mirrored)
+  unsigned int third;
+  TPoint* pointArray;
+  TCell** cellArray;
+  CompactBlock* block;
 
-  template <bool VCompact>
-  void
-  WriteSlice(SizeT k) const
+  template <bool VCompact> void WriteSlice(SizeT k) const
   {
     for (SizeT j = 0; j < ny; ++j)
     {
@@ -92,17 +86,16 @@ struct SliceWriter
   }
 
   // The points of row (j, k): its cut x-edges, then y-edges, then z-edges, each by increasing i.
-  void
-  WritePoints(SizeT j, SizeT k) const
+  void WritePoints(SizeT j, SizeT k) const
   {
-    const SizeT          nex = rows.nex;
-    const SizeT          nxy = nx * ny;
-    const SizeT          r = j + ny * k;
-    const T *            s = values + nx * r;
-    const double         dj = static_cast<double>(j);
-    const double         dk = static_cast<double>(k);
-    const std::uint8_t * ec = rows.Codes(r);
-    Id                   id = pointOffset[r];
+    const SizeT nex = rows.nex;
+    const SizeT nxy = nx * ny;
+    const SizeT r = j + ny * k;
+    const T* s = values + nx * r;
+    const double dj = static_cast<double>(j);
+    const double dk = static_cast<double>(k);
+    const std::uint8_t* ec = rows.Codes(r);
+    Id id = pointOffset[r];
     ForEachCrossedEdge(ec, rows.xL[r], rows.xR[r], [&](SizeT i) {
       const double s0 = static_cast<double>(s[i]);
       const double t = (iso - s0) / (static_cast<double>(s[i + 1]) - s0);
@@ -128,27 +121,25 @@ struct SliceWriter
   }
 
   // The triangles of the voxel row whose lower corner row is (j, k), j < ny-1, k < nz-1.
-  template <bool VCompact>
-  void
-  WriteTriangles(SizeT j, SizeT k) const
+  template <bool VCompact> void WriteTriangles(SizeT j, SizeT k) const
   {
     const SizeT r = j + ny * k;
     // Running ids of the next cut edge of each row the voxel row touches: x-edges of its four rows, y-edges of
     // rows (j,k) and (j,k+1), z-edges of rows (j,k) and (j+1,k). No edge before L is cut.
-    Id                   cx0 = pointOffset[r];
-    Id                   cx1 = pointOffset[r + 1];
-    Id                   cx2 = pointOffset[r + ny];
-    Id                   cx3 = pointOffset[r + ny + 1];
-    Id                   cy0 = cx0 + edgeCount[3 * r];
-    Id                   cy1 = cx2 + edgeCount[3 * (r + ny)];
-    Id                   cz0 = cy0 + edgeCount[3 * r + 1];
-    Id                   cz1 = cx1 + edgeCount[3 * (r + 1)] + edgeCount[3 * (r + 1) + 1];
-    Id                   tri = triangleOffset[r];
-    const std::uint8_t * e0 = rows.Codes(r);
-    const std::uint8_t * e1 = rows.Codes(r + 1);
-    const std::uint8_t * e2 = rows.Codes(r + ny);
-    const std::uint8_t * e3 = rows.Codes(r + ny + 1);
-    SizeT                L, R;
+    Id cx0 = pointOffset[r];
+    Id cx1 = pointOffset[r + 1];
+    Id cx2 = pointOffset[r + ny];
+    Id cx3 = pointOffset[r + ny + 1];
+    Id cy0 = cx0 + edgeCount[3 * r];
+    Id cy1 = cx2 + edgeCount[3 * (r + ny)];
+    Id cz0 = cy0 + edgeCount[3 * r + 1];
+    Id cz1 = cx1 + edgeCount[3 * (r + 1)] + edgeCount[3 * (r + 1) + 1];
+    Id tri = triangleOffset[r];
+    const std::uint8_t* e0 = rows.Codes(r);
+    const std::uint8_t* e1 = rows.Codes(r + 1);
+    const std::uint8_t* e2 = rows.Codes(r + ny);
+    const std::uint8_t* e3 = rows.Codes(r + ny + 1);
+    SizeT L, R;
     rows.VoxelRange(r, ny, L, R);
     for (SizeT i = L; i < R; ++i)
     {
@@ -174,21 +165,25 @@ struct SliceWriter
       {
         continue;
       }
-      const MarchingCubesTables::Case & c = cases[code];
-      const unsigned int                m = c.IntersectedEdges;
-      const Id ids[12] = { cx0, cx1, cx2, cx3, cy0, cy0 + ((m >> 4) & 1U), cy1, cy1 + ((m >> 6) & 1U),
-                           cz0, cz0 + ((m >> 8) & 1U), cz1, cz1 + ((m >> 10) & 1U) };
+      const MarchingCubesTables::Case& c = cases[code];
+      const unsigned int m = c.IntersectedEdges;
+      const Id ids[12] = {cx0, cx1,
+                          cx2, cx3,
+                          cy0, cy0 + ((m >> 4) & 1U),
+                          cy1, cy1 + ((m >> 6) & 1U),
+                          cz0, cz0 + ((m >> 8) & 1U),
+                          cz1, cz1 + ((m >> 10) & 1U)};
       for (unsigned int t = 0; t < c.NumberOfTriangles; ++t, ++tri)
       {
-        const std::uint8_t * edges = c.Edges.data() + 3 * t;
+        const std::uint8_t* edges = c.Edges.data() + 3 * t;
         if constexpr (VCompact)
         {
           cellArray[tri] = block->Construct(tri, ids[edges[0]], ids[edges[second]], ids[edges[third]]);
         }
         else
         {
-          auto *                cell = new TriangleCell<TCell>;
-          const PointIdentifier triangle[3] = { ids[edges[0]], ids[edges[second]], ids[edges[third]] };
+          auto* cell = new TriangleCell<TCell>;
+          const PointIdentifier triangle[3] = {ids[edges[0]], ids[edges[second]], ids[edges[third]]};
           cell->SetPointIds(triangle);
           cellArray[tri] = cell;
         }

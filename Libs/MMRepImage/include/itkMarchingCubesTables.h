@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Marching Cubes case table, derived at first use from the cube geometry rather than typed in, so that
 // every rule it follows is visible here:
 //  - a corner is "inside" when its value is >= the iso-value (VTK's convention);
@@ -19,33 +21,32 @@ namespace MarchingCubesTables
 {
 // Cube corner v sits at (v & 1, (v >> 1) & 1, (v >> 2) & 1): bit v of a case code is corner v's class.
 // Edges 0-3 run along x, 4-7 along y, 8-11 along z; each goes from its lower corner to its upper corner.
-constexpr std::array<std::array<std::uint8_t, 2>, 12> EdgeCorners{ { { { 0, 1 } },
-                                                                     { { 2, 3 } },
-                                                                     { { 4, 5 } },
-                                                                     { { 6, 7 } },
-                                                                     { { 0, 2 } },
-                                                                     { { 1, 3 } },
-                                                                     { { 4, 6 } },
-                                                                     { { 5, 7 } },
-                                                                     { { 0, 4 } },
-                                                                     { { 1, 5 } },
-                                                                     { { 2, 6 } },
-                                                                     { { 3, 7 } } } };
+constexpr std::array<std::array<std::uint8_t, 2>, 12> EdgeCorners{{{{0, 1}},
+                                                                   {{2, 3}},
+                                                                   {{4, 5}},
+                                                                   {{6, 7}},
+                                                                   {{0, 2}},
+                                                                   {{1, 3}},
+                                                                   {{4, 6}},
+                                                                   {{5, 7}},
+                                                                   {{0, 4}},
+                                                                   {{1, 5}},
+                                                                   {{2, 6}},
+                                                                   {{3, 7}}}};
 
 // Up to 12 intersected edges, each loop of n edges gives n - 2 triangles: at most 10 triangles.
 constexpr unsigned int MaximumNumberOfTriangles = 10;
 
 struct Case
 {
-  std::uint8_t                                         NumberOfTriangles = 0;
-  std::uint16_t                                        IntersectedEdges = 0; // bit e set: edge e is cut
-  std::array<std::uint8_t, 3 * MaximumNumberOfTriangles> Edges{};            // 3 edge numbers per triangle
+  std::uint8_t NumberOfTriangles = 0;
+  std::uint16_t IntersectedEdges = 0;                             // bit e set: edge e is cut
+  std::array<std::uint8_t, 3 * MaximumNumberOfTriangles> Edges{}; // 3 edge numbers per triangle
 };
 
 namespace Detail
 {
-inline int
-EdgeBetween(int a, int b)
+inline int EdgeBetween(int a, int b)
 {
   for (int e = 0; e < 12; ++e)
   {
@@ -57,23 +58,20 @@ EdgeBetween(int a, int b)
   return -1;
 }
 
-inline std::array<double, 3>
-Corner(int v)
+inline std::array<double, 3> Corner(int v)
 {
-  return { double(v & 1), double((v >> 1) & 1), double((v >> 2) & 1) };
+  return {double(v & 1), double((v >> 1) & 1), double((v >> 2) & 1)};
 }
 
-inline std::array<double, 3>
-EdgeMidpoint(int e)
+inline std::array<double, 3> EdgeMidpoint(int e)
 {
   const auto a = Corner(EdgeCorners[e][0]);
   const auto b = Corner(EdgeCorners[e][1]);
-  return { 0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2]) };
+  return {0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])};
 }
 
 // True when edges a and b lie on a common cube face.
-inline bool
-ShareFace(int a, int b)
+inline bool ShareFace(int a, int b)
 {
   const auto pa = EdgeMidpoint(a);
   const auto pb = EdgeMidpoint(b);
@@ -87,11 +85,10 @@ ShareFace(int a, int b)
   return false;
 }
 
-inline Case
-MakeCase(unsigned int code)
+inline Case MakeCase(unsigned int code)
 {
   const auto inside = [code](int v) { return ((code >> v) & 1U) != 0; };
-  Case       c;
+  Case c;
   for (int e = 0; e < 12; ++e)
   {
     if (inside(EdgeCorners[e][0]) != inside(EdgeCorners[e][1]))
@@ -110,7 +107,7 @@ MakeCase(unsigned int code)
     {
       // Face corners in cyclic order.
       std::array<int, 4> q;
-      const int          uv[4][2] = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+      const int uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
       for (int n = 0; n < 4; ++n)
       {
         q[n] = (side << axis) | (uv[n][0] << u) | (uv[n][1] << w);
@@ -122,9 +119,9 @@ MakeCase(unsigned int code)
       }
       // Pair the cut edges of this face into segments.
       std::array<std::array<int, 2>, 2> seg;
-      int                               numSeg = 0;
-      std::array<int, 4>                cut;
-      int                               numCut = 0;
+      int numSeg = 0;
+      std::array<int, 4> cut;
+      int numCut = 0;
       for (int n = 0; n < 4; ++n)
       {
         if ((c.IntersectedEdges >> fe[n]) & 1U)
@@ -134,7 +131,7 @@ MakeCase(unsigned int code)
       }
       if (numCut == 2)
       {
-        seg[numSeg++] = { fe[cut[0]], fe[cut[1]] };
+        seg[numSeg++] = {fe[cut[0]], fe[cut[1]]};
       }
       else if (numCut == 4)
       {
@@ -143,26 +140,24 @@ MakeCase(unsigned int code)
         {
           if (inside(q[n]))
           {
-            seg[numSeg++] = { fe[(n + 3) % 4], fe[n] };
+            seg[numSeg++] = {fe[(n + 3) % 4], fe[n]};
           }
         }
       }
       // Orient each segment A -> B so that (faceNormal x (B - A)) points towards the outside side of the face.
-      std::array<double, 3> normal{ 0.0, 0.0, 0.0 };
+      std::array<double, 3> normal{0.0, 0.0, 0.0};
       normal[axis] = side ? 1.0 : -1.0;
       for (int s = 0; s < numSeg; ++s)
       {
-        int        a = seg[s][0];
-        int        b = seg[s][1];
+        int a = seg[s][0];
+        int b = seg[s][1];
         const auto pa = EdgeMidpoint(a);
         const auto pb = EdgeMidpoint(b);
         const auto cin = Corner(inside(EdgeCorners[a][0]) ? EdgeCorners[a][0] : EdgeCorners[a][1]);
-        const std::array<double, 3> d{ pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2] };
-        const std::array<double, 3> nxd{ normal[1] * d[2] - normal[2] * d[1],
-                                         normal[2] * d[0] - normal[0] * d[2],
-                                         normal[0] * d[1] - normal[1] * d[0] };
-        const double                side_ =
-          nxd[0] * (cin[0] - pa[0]) + nxd[1] * (cin[1] - pa[1]) + nxd[2] * (cin[2] - pa[2]);
+        const std::array<double, 3> d{pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
+        const std::array<double, 3> nxd{normal[1] * d[2] - normal[2] * d[1], normal[2] * d[0] - normal[0] * d[2],
+                                        normal[0] * d[1] - normal[1] * d[0]};
+        const double side_ = nxd[0] * (cin[0] - pa[0]) + nxd[1] * (cin[1] - pa[1]) + nxd[2] * (cin[2] - pa[2]);
         if (side_ > 0.0)
         {
           const int t = a;
@@ -176,7 +171,7 @@ MakeCase(unsigned int code)
   // Chain the segments into loops and triangulate each loop as a fan. The fan apex is chosen so that no
   // diagonal joins two edges of one cube face: such a diagonal would be shared with the neighbouring cube.
   std::array<bool, 12> used{};
-  unsigned int         numTriangles = 0;
+  unsigned int numTriangles = 0;
   for (int start = 0; start < 12; ++start)
   {
     if (!((c.IntersectedEdges >> start) & 1U) || used[start])
@@ -184,7 +179,7 @@ MakeCase(unsigned int code)
       continue;
     }
     std::array<int, 12> loop;
-    int                 n = 0;
+    int n = 0;
     for (int e = start; !used[e]; e = next[e])
     {
       used[e] = true;
@@ -219,8 +214,7 @@ MakeCase(unsigned int code)
 } // namespace Detail
 
 // The 256 cases, built once (thread-safe static initialisation).
-inline const std::array<Case, 256> &
-GetCases()
+inline const std::array<Case, 256>& GetCases()
 {
   static const std::array<Case, 256> cases = [] {
     std::array<Case, 256> t;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #ifndef itkSaitoToriwakiDistanceMapImageFilter_h
 #define itkSaitoToriwakiDistanceMapImageFilter_h
 
@@ -95,8 +97,7 @@ public:
   itkGetConstReferenceMacro(BackgroundValue, InputPixelType);
 
   /** Sets the value of the foreground pixels and turns UseForegroundValue on. */
-  void
-  SetForegroundValue(const InputPixelType & value);
+  void SetForegroundValue(const InputPixelType& value);
   itkGetConstReferenceMacro(ForegroundValue, InputPixelType);
 
   /** When on, foreground is == ForegroundValue instead of != BackgroundValue. Default off. */
@@ -130,97 +131,78 @@ public:
   itkBooleanMacro(ComputeNearestVector);
 
   /** Distance map (first output). */
-  OutputImageType *
-  GetDistanceMap()
-  {
-    return this->GetOutput();
-  }
+  OutputImageType* GetDistanceMap() { return this->GetOutput(); }
 
   /** Vector from each pixel to its nearest feature pixel; empty unless ComputeNearestVector is on. */
-  NearestVectorImageType *
-  GetNearestVectorOutput();
+  NearestVectorImageType* GetNearestVectorOutput();
 
   using Superclass::MakeOutput;
-  DataObjectPointer
-  MakeOutput(DataObjectPointerArraySizeType idx) override;
+  DataObjectPointer MakeOutput(DataObjectPointerArraySizeType idx) override;
 
 protected:
   SaitoToriwakiDistanceMapImageFilter();
   ~SaitoToriwakiDistanceMapImageFilter() override = default;
 
-  void
-  PrintSelf(std::ostream & os, Indent indent) const override;
+  void PrintSelf(std::ostream& os, Indent indent) const override;
 
-  void
-  GenerateInputRequestedRegion() override;
+  void GenerateInputRequestedRegion() override;
 
-  void
-  EnlargeOutputRequestedRegion(DataObject * output) override;
+  void EnlargeOutputRequestedRegion(DataObject* output) override;
 
-  void
-  AllocateOutputs() override;
+  void AllocateOutputs() override;
 
-  void
-  GenerateData() override;
+  void GenerateData() override;
 
 private:
   // Raw buffers and geometry shared by the passes of one GenerateData() call.
   struct Context
   {
-    const InputPixelType *   input{ nullptr };
-    OutputPixelType *        output{ nullptr };
-    NearestVectorPixelType * vectors{ nullptr };
-    SizeValueType *          nearest{ nullptr }; // linear index of the nearest feature so far
-    SizeValueType            size[ImageDimension]{};
-    SizeValueType            stride[ImageDimension]{};
-    double                   weight[ImageDimension]{}; // spacing, or 1
-    double                   direction[ImageDimension][ImageDimension]{};
+    const InputPixelType* input{nullptr};
+    OutputPixelType* output{nullptr};
+    NearestVectorPixelType* vectors{nullptr};
+    SizeValueType* nearest{nullptr}; // linear index of the nearest feature so far
+    SizeValueType size[ImageDimension]{};
+    SizeValueType stride[ImageDimension]{};
+    double weight[ImageDimension]{}; // spacing, or 1
+    double direction[ImageDimension][ImageDimension]{};
   };
 
-  bool
-  IsForeground(const InputPixelType & v) const
+  bool IsForeground(const InputPixelType& v) const
   {
     return m_UseForegroundValue ? (v == m_ForegroundValue) : (v != m_BackgroundValue);
   }
 
   // 1-D distance along x (axis 0), features found per line; counts foreground/feature pixels seen.
   template <bool VTrackNearest>
-  void
-  FirstAxisPass(const Context & c, const OutputImageRegionType & region, bool & anyForeground, bool & anyFeature) const;
+  void FirstAxisPass(const Context& c, const OutputImageRegionType& region, bool& anyForeground,
+                     bool& anyFeature) const;
 
   // Signed distance: flags in `boundary` the foreground pixels of the x-line at `in` (index: its position, fg: its
   // foreground flags) that have a background pixel among their neighbours; nearBackground is nx + 2 scratch.
-  void
-  FlagBoundary(const Context &        c,
-               const InputPixelType * in,
-               const IndexValueType * index,
-               const unsigned char *  fg,
-               unsigned char *        nearBackground,
-               unsigned char *        boundary) const;
+  void FlagBoundary(const Context& c, const InputPixelType* in, const IndexValueType* index, const unsigned char* fg,
+                    unsigned char* nearBackground, unsigned char* boundary) const;
 
   // Lower-envelope pass along axis d >= 1.
   template <bool VTrackNearest>
-  void
-  EnvelopePass(const Context & c, unsigned int d, const OutputImageRegionType & region) const;
+  void EnvelopePass(const Context& c, unsigned int d, const OutputImageRegionType& region) const;
 
   // Writes the final value (root, sign) and nearest vector of pixel p from its squared distance.
   template <bool VTrackNearest>
-  void
-  StoreFinal(const Context & c, SizeValueType p, double squared, SizeValueType nearest) const;
+  void StoreFinal(const Context& c, SizeValueType p, double squared, SizeValueType nearest) const;
 
   InputPixelType m_BackgroundValue{};
   InputPixelType m_ForegroundValue{};
-  bool           m_UseForegroundValue{ false };
-  bool           m_UseImageSpacing{ true };
-  bool           m_SquaredDistance{ false };
-  bool           m_SignedDistance{ false };
-  bool           m_InsideIsPositive{ false };
-  bool           m_ComputeNearestVector{ false };
+  bool m_UseForegroundValue{false};
+  bool m_UseImageSpacing{true};
+  bool m_SquaredDistance{false};
+  bool m_SignedDistance{false};
+  bool m_InsideIsPositive{false};
+  bool m_ComputeNearestVector{false};
 };
 } // namespace itk
 
 #ifndef ITK_MANUAL_INSTANTIATION
-#  include "itkSaitoToriwakiDistanceMapImageFilter.hxx"
+#include "itkSaitoToriwakiDistanceMapImageFilter.hxx"
 #endif
 
 #endif

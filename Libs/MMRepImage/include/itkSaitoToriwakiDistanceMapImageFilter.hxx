@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #ifndef itkSaitoToriwakiDistanceMapImageFilter_hxx
 #define itkSaitoToriwakiDistanceMapImageFilter_hxx
 
@@ -29,8 +31,7 @@ SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::SaitoToriwakiDis
 }
 
 template <typename TInputImage, typename TOutputImage>
-void
-SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::SetForegroundValue(const InputPixelType & value)
+void SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::SetForegroundValue(const InputPixelType& value)
 {
   if (m_ForegroundValue != value || !m_UseForegroundValue)
   {
@@ -52,31 +53,29 @@ SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::MakeOutput(DataO
 }
 
 template <typename TInputImage, typename TOutputImage>
-typename SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::NearestVectorImageType *
+typename SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::NearestVectorImageType*
 SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::GetNearestVectorOutput()
 {
-  return dynamic_cast<NearestVectorImageType *>(this->ProcessObject::GetOutput(1));
+  return dynamic_cast<NearestVectorImageType*>(this->ProcessObject::GetOutput(1));
 }
 
 template <typename TInputImage, typename TOutputImage>
-void
-SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::GenerateInputRequestedRegion()
+void SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::GenerateInputRequestedRegion()
 {
   Superclass::GenerateInputRequestedRegion();
   // Distances depend on the whole image.
-  if (auto * input = const_cast<InputImageType *>(this->GetInput()))
+  if (auto* input = const_cast<InputImageType*>(this->GetInput()))
   {
     input->SetRequestedRegionToLargestPossibleRegion();
   }
 }
 
 template <typename TInputImage, typename TOutputImage>
-void
-SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::EnlargeOutputRequestedRegion(DataObject *)
+void SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::EnlargeOutputRequestedRegion(DataObject*)
 {
   for (unsigned int i = 0; i < this->GetNumberOfIndexedOutputs(); ++i)
   {
-    if (auto * image = dynamic_cast<ImageBase<ImageDimension> *>(this->ProcessObject::GetOutput(i)))
+    if (auto* image = dynamic_cast<ImageBase<ImageDimension>*>(this->ProcessObject::GetOutput(i)))
     {
       image->SetRequestedRegionToLargestPossibleRegion();
     }
@@ -84,13 +83,12 @@ SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::EnlargeOutputReq
 }
 
 template <typename TInputImage, typename TOutputImage>
-void
-SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::AllocateOutputs()
+void SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::AllocateOutputs()
 {
-  OutputImageType * output = this->GetOutput();
+  OutputImageType* output = this->GetOutput();
   output->SetBufferedRegion(output->GetRequestedRegion());
   output->Allocate();
-  NearestVectorImageType * vectors = this->GetNearestVectorOutput();
+  NearestVectorImageType* vectors = this->GetNearestVectorOutput();
   if (m_ComputeNearestVector)
   {
     vectors->SetBufferedRegion(vectors->GetRequestedRegion());
@@ -103,13 +101,12 @@ SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::AllocateOutputs(
 }
 
 template <typename TInputImage, typename TOutputImage>
-void
-SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::GenerateData()
+void SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::GenerateData()
 {
   this->AllocateOutputs();
-  const InputImageType * input = this->GetInput();
-  OutputImageType *      output = this->GetOutput();
-  const SizeType         size = output->GetBufferedRegion().GetSize();
+  const InputImageType* input = this->GetInput();
+  OutputImageType* output = this->GetOutput();
+  const SizeType size = output->GetBufferedRegion().GetSize();
   if (input->GetBufferedRegion().GetSize() != size)
   {
     itkExceptionMacro("input buffered region " << input->GetBufferedRegion() << " differs from the output region "
@@ -147,18 +144,17 @@ SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::GenerateData()
   OutputImageRegionType lattice;
   lattice.SetSize(size);
 
-  MultiThreaderBase * threader = this->GetMultiThreader();
+  MultiThreaderBase* threader = this->GetMultiThreader();
   threader->SetNumberOfWorkUnits(this->GetNumberOfWorkUnits());
   const float passShare = 1.0f / static_cast<float>(ImageDimension);
 
-  std::atomic<bool> anyForeground{ false };
-  std::atomic<bool> anyFeature{ false };
+  std::atomic<bool> anyForeground{false};
+  std::atomic<bool> anyFeature{false};
   {
     ProgressTransformer progress(0.0f, passShare, this);
     threader->template ParallelizeImageRegionRestrictDirection<ImageDimension>(
-      0,
-      lattice,
-      [&](const OutputImageRegionType & region) {
+      0, lattice,
+      [&](const OutputImageRegionType& region) {
         bool foreground = false;
         bool feature = false;
         if (m_ComputeNearestVector)
@@ -193,9 +189,8 @@ SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::GenerateData()
   {
     ProgressTransformer progress(passShare * static_cast<float>(d), passShare * static_cast<float>(d + 1), this);
     threader->template ParallelizeImageRegionRestrictDirection<ImageDimension>(
-      d,
-      lattice,
-      [&](const OutputImageRegionType & region) {
+      d, lattice,
+      [&](const OutputImageRegionType& region) {
         if (m_ComputeNearestVector)
         {
           this->template EnvelopePass<true>(c, d, region);
@@ -211,11 +206,9 @@ SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::GenerateData()
 
 template <typename TInputImage, typename TOutputImage>
 template <bool VTrackNearest>
-void
-SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::StoreFinal(const Context & c,
-                                                                           SizeValueType   p,
-                                                                           double          squared,
-                                                                           SizeValueType   nearest) const
+void SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::StoreFinal(const Context& c, SizeValueType p,
+                                                                                double squared,
+                                                                                SizeValueType nearest) const
 {
   double value = m_SquaredDistance ? squared : std::sqrt(squared);
   if (m_SignedDistance && this->IsForeground(c.input[p]) != m_InsideIsPositive)
@@ -225,7 +218,7 @@ SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::StoreFinal(const
   c.output[p] = static_cast<OutputPixelType>(value);
   if (VTrackNearest)
   {
-    double        offset[ImageDimension];
+    double offset[ImageDimension];
     SizeValueType restP = p;
     SizeValueType restQ = nearest;
     for (unsigned int k = ImageDimension; k-- > 0;)
@@ -236,7 +229,7 @@ SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::StoreFinal(const
       restQ -= iq * c.stride[k];
       offset[k] = (static_cast<double>(iq) - static_cast<double>(ip)) * c.weight[k];
     }
-    NearestVectorPixelType & v = c.vectors[p];
+    NearestVectorPixelType& v = c.vectors[p];
     for (unsigned int r = 0; r < ImageDimension; ++r)
     {
       double sum = 0.0;
@@ -257,8 +250,7 @@ SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::StoreFinal(const
 }
 
 template <typename TInputImage, typename TOutputImage>
-void
-SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::PrintSelf(std::ostream & os, Indent indent) const
+void SaitoToriwakiDistanceMapImageFilter<TInputImage, TOutputImage>::PrintSelf(std::ostream& os, Indent indent) const
 {
   using PrintType = typename NumericTraits<InputPixelType>::PrintType;
   Superclass::PrintSelf(os, indent);

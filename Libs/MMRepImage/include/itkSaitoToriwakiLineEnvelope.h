@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #ifndef itkSaitoToriwakiLineEnvelope_h
 #define itkSaitoToriwakiLineEnvelope_h
 
@@ -18,12 +20,8 @@ namespace SaitoToriwakiDetail
 // Calls f(base, index) once per combination of the region's indices on the axes other than skipA and
 // skipB; base is the linear offset of that combination (skipped axes at 0). The region is zero-based.
 template <unsigned int VDimension, typename TFunction>
-void
-ForEachOuter(const ImageRegion<VDimension> & region,
-             const SizeValueType *           stride,
-             unsigned int                    skipA,
-             unsigned int                    skipB,
-             TFunction &&                    f)
+void ForEachOuter(const ImageRegion<VDimension>& region, const SizeValueType* stride, unsigned int skipA,
+                  unsigned int skipB, TFunction&& f)
 {
   IndexValueType index[VDimension];
   for (unsigned int k = 0; k < VDimension; ++k)
@@ -44,7 +42,7 @@ ForEachOuter(const ImageRegion<VDimension> & region,
         base += static_cast<SizeValueType>(index[k]) * stride[k];
       }
     }
-    f(base, static_cast<const IndexValueType *>(index));
+    f(base, static_cast<const IndexValueType*>(index));
     unsigned int k = 0;
     for (; k < VDimension; ++k)
     {
@@ -68,18 +66,12 @@ ForEachOuter(const ImageRegion<VDimension> & region,
 // Scratch of one line's lower envelope: site index, position, value, value + position^2, start.
 struct EnvelopeScratch
 {
-  explicit EnvelopeScratch(SizeValueType n)
-    : site(n)
-    , x(n)
-    , f(n)
-    , h(n)
-    , z(n + 1)
-  {}
+  explicit EnvelopeScratch(SizeValueType n) : site(n), x(n), f(n), h(n), z(n + 1) {}
   std::vector<std::uint32_t> site;
-  std::vector<double>        x;
-  std::vector<double>        f;
-  std::vector<double>        h;
-  std::vector<double>        z;
+  std::vector<double> x;
+  std::vector<double> f;
+  std::vector<double> h;
+  std::vector<double> z;
 };
 
 // g[i] = min_j f[j] + ((i - j) w)^2 and arg[i] = the minimising j, for the n samples of one line
@@ -88,16 +80,15 @@ struct EnvelopeScratch
 // z[k] is where parabola k starts to be lowest. Linear time. Arithmetic in double: the intersection
 // abscissa subtracts terms of size (n w)^2, which float would round to a visible error.
 template <bool VTrackArg>
-inline void
-LowerEnvelope(const float * f, SizeValueType n, double w, float * g, std::uint32_t * arg, EnvelopeScratch & e)
+inline void LowerEnvelope(const float* f, SizeValueType n, double w, float* g, std::uint32_t* arg, EnvelopeScratch& e)
 {
   constexpr double inf = std::numeric_limits<double>::infinity();
-  std::uint32_t * const site = e.site.data();
-  double * const        sx = e.x.data();
-  double * const        sf = e.f.data();
-  double * const        sh = e.h.data();
-  double * const        z = e.z.data();
-  std::ptrdiff_t        k = -1;
+  std::uint32_t* const site = e.site.data();
+  double* const sx = e.x.data();
+  double* const sf = e.f.data();
+  double* const sh = e.h.data();
+  double* const z = e.z.data();
+  std::ptrdiff_t k = -1;
   for (SizeValueType q = 0; q < n; ++q)
   {
     const double fq = f[q];

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Tests of itk::MarchingCubesImageToMeshFilter against vtkFlyingEdges3D / vtkMarchingCubes, analytic spheres and
 // topological invariants (closed 2-manifold, outward orientation).
 #include "itkMarchingCubesImageToMeshFilter.h"
@@ -39,8 +41,7 @@ using ShortFilter = itk::MarchingCubesImageToMeshFilter<ShortImage, Mesh>;
 using FloatFilter = itk::MarchingCubesImageToMeshFilter<FloatImage, Mesh>;
 using Vec = std::array<double, 3>;
 
-ShortImage::Pointer
-ReadSample(const std::string & name)
+ShortImage::Pointer ReadSample(const std::string& name)
 {
   auto reader = itk::ImageFileReader<ShortImage>::New();
   reader->SetFileName(std::string(MMREP_SAMPLE_DATA) + "/" + name);
@@ -51,15 +52,14 @@ ReadSample(const std::string & name)
 }
 
 // Same voxels, origin, spacing and direction as a VTK image.
-vtkSmartPointer<vtkImageData>
-ToVtk(const ShortImage * image)
+vtkSmartPointer<vtkImageData> ToVtk(const ShortImage* image)
 {
   const auto size = image->GetLargestPossibleRegion().GetSize();
-  auto       out = vtkSmartPointer<vtkImageData>::New();
+  auto out = vtkSmartPointer<vtkImageData>::New();
   out->SetDimensions(int(size[0]), int(size[1]), int(size[2]));
   out->SetSpacing(image->GetSpacing()[0], image->GetSpacing()[1], image->GetSpacing()[2]);
   out->SetOrigin(image->GetOrigin()[0], image->GetOrigin()[1], image->GetOrigin()[2]);
-  const auto & d = image->GetDirection();
+  const auto& d = image->GetDirection();
   out->SetDirectionMatrix(d[0][0], d[0][1], d[0][2], d[1][0], d[1][1], d[1][2], d[2][0], d[2][1], d[2][2]);
   vtkNew<vtkShortArray> scalars;
   scalars->SetNumberOfTuples(vtkIdType(image->GetPixelContainer()->Size()));
@@ -69,8 +69,8 @@ ToVtk(const ShortImage * image)
 }
 
 template <typename TFilter, typename TImage>
-Mesh::Pointer
-RunFilter(const TImage * image, double iso, bool pad = false, unsigned int workUnits = 0, bool compact = true)
+Mesh::Pointer RunFilter(const TImage* image, double iso, bool pad = false, unsigned int workUnits = 0,
+                        bool compact = true)
 {
   auto filter = TFilter::New();
   filter->SetInput(image);
@@ -87,50 +87,45 @@ RunFilter(const TImage * image, double iso, bool pad = false, unsigned int workU
   return mesh;
 }
 
-std::vector<std::array<Mesh::PointIdentifier, 3>>
-Triangles(const Mesh * mesh)
+std::vector<std::array<Mesh::PointIdentifier, 3>> Triangles(const Mesh* mesh)
 {
   std::vector<std::array<Mesh::PointIdentifier, 3>> out;
   out.reserve(mesh->GetNumberOfCells());
   for (auto it = mesh->GetCells()->Begin(); it != mesh->GetCells()->End(); ++it)
   {
-    const Mesh::CellType * cell = it.Value();
+    const Mesh::CellType* cell = it.Value();
     EXPECT_EQ(cell->GetType(), itk::CellGeometryEnum::TRIANGLE_CELL);
     EXPECT_EQ(cell->GetNumberOfPoints(), 3u);
-    const auto * ids = cell->PointIdsBegin();
-    out.push_back({ { ids[0], ids[1], ids[2] } });
+    const auto* ids = cell->PointIdsBegin();
+    out.push_back({{ids[0], ids[1], ids[2]}});
   }
   return out;
 }
 
-Vec
-P(const Mesh * mesh, Mesh::PointIdentifier id)
+Vec P(const Mesh* mesh, Mesh::PointIdentifier id)
 {
-  const auto & p = mesh->GetPoints()->ElementAt(id);
-  return { { p[0], p[1], p[2] } };
+  const auto& p = mesh->GetPoints()->ElementAt(id);
+  return {{p[0], p[1], p[2]}};
 }
 
-Vec
-Cross(const Vec & a, const Vec & b)
+Vec Cross(const Vec& a, const Vec& b)
 {
-  return { { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] } };
+  return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
 }
 
-Vec
-Sub(const Vec & a, const Vec & b)
+Vec Sub(const Vec& a, const Vec& b)
 {
-  return { { a[0] - b[0], a[1] - b[1], a[2] - b[2] } };
+  return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}};
 }
 
 // Closed, consistently oriented 2-manifold: every directed edge occurs once and its reverse occurs once, so
 // every edge is in exactly two triangles that traverse it in opposite directions. Returns failures found.
-::testing::AssertionResult
-IsClosedOrientedManifold(const Mesh * mesh)
+::testing::AssertionResult IsClosedOrientedManifold(const Mesh* mesh)
 {
-  const auto                                                 tris = Triangles(mesh);
+  const auto tris = Triangles(mesh);
   std::vector<std::pair<Mesh::PointIdentifier, Mesh::PointIdentifier>> directed;
   directed.reserve(3 * tris.size());
-  for (const auto & t : tris)
+  for (const auto& t : tris)
   {
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
     {
@@ -151,18 +146,17 @@ IsClosedOrientedManifold(const Mesh * mesh)
     }
     if (!std::binary_search(directed.begin(), directed.end(), std::make_pair(directed[n].second, directed[n].first)))
     {
-      return ::testing::AssertionFailure() << "edge " << directed[n].first << "-" << directed[n].second
-                                           << " is on the border (only one triangle)";
+      return ::testing::AssertionFailure()
+             << "edge " << directed[n].first << "-" << directed[n].second << " is on the border (only one triangle)";
     }
   }
   return ::testing::AssertionSuccess();
 }
 
-double
-SignedVolume(const Mesh * mesh)
+double SignedVolume(const Mesh* mesh)
 {
   double volume = 0.0;
-  for (const auto & t : Triangles(mesh))
+  for (const auto& t : Triangles(mesh))
   {
     const Vec a = P(mesh, t[0]), b = P(mesh, t[1]), c = P(mesh, t[2]);
     const Vec n = Cross(b, c);
@@ -171,11 +165,10 @@ SignedVolume(const Mesh * mesh)
   return volume;
 }
 
-double
-Area(const Mesh * mesh)
+double Area(const Mesh* mesh)
 {
   double area = 0.0;
-  for (const auto & t : Triangles(mesh))
+  for (const auto& t : Triangles(mesh))
   {
     const Vec n = Cross(Sub(P(mesh, t[1]), P(mesh, t[0])), Sub(P(mesh, t[2]), P(mesh, t[0])));
     area += 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
@@ -183,8 +176,7 @@ Area(const Mesh * mesh)
   return area;
 }
 
-vtkSmartPointer<vtkPolyData>
-ToPolyData(const Mesh * mesh)
+vtkSmartPointer<vtkPolyData> ToPolyData(const Mesh* mesh)
 {
   vtkNew<vtkPoints> points;
   points->SetNumberOfPoints(vtkIdType(mesh->GetNumberOfPoints()));
@@ -198,8 +190,7 @@ ToPolyData(const Mesh * mesh)
 }
 
 // Largest distance from a point of `from` to the nearest point of `to`.
-double
-OneSidedDistance(vtkPolyData * from, vtkPolyData * to)
+double OneSidedDistance(vtkPolyData* from, vtkPolyData* to)
 {
   vtkNew<vtkStaticPointLocator> locator;
   locator->SetDataSet(to);
@@ -218,8 +209,7 @@ OneSidedDistance(vtkPolyData * from, vtkPolyData * to)
 
 // Same point count and every point of either set within tol of a point of the other. (Points can coincide
 // when a sample equals the iso-value, so a one-to-one matching is not required.)
-void
-ExpectSamePoints(const Mesh * ours, vtkPolyData * theirs, double tol)
+void ExpectSamePoints(const Mesh* ours, vtkPolyData* theirs, double tol)
 {
   ASSERT_EQ(vtkIdType(ours->GetNumberOfPoints()), theirs->GetNumberOfPoints());
   if (theirs->GetNumberOfPoints() == 0)
@@ -231,8 +221,7 @@ ExpectSamePoints(const Mesh * ours, vtkPolyData * theirs, double tol)
   EXPECT_LE(OneSidedDistance(theirs, mine), tol) << "a VTK point is not one of ours";
 }
 
-vtkSmartPointer<vtkPolyData>
-FlyingEdges(vtkImageData * image, double iso)
+vtkSmartPointer<vtkPolyData> FlyingEdges(vtkImageData* image, double iso)
 {
   vtkNew<vtkFlyingEdges3D> fe;
   fe->SetInputData(image);
@@ -246,17 +235,17 @@ FlyingEdges(vtkImageData * image, double iso)
 
 struct CtCase
 {
-  const char * file;
-  double       iso;
+  const char* file;
+  double iso;
 };
-void
-PrintTo(const CtCase & c, std::ostream * os)
+void PrintTo(const CtCase& c, std::ostream* os)
 {
   *os << c.file << " at " << c.iso;
 }
 
 class MarchingCubesVsFlyingEdges : public ::testing::TestWithParam<CtCase>
-{};
+{
+};
 
 TEST_P(MarchingCubesVsFlyingEdges, SamePointsAndTriangleCount)
 {
@@ -277,7 +266,7 @@ TEST_P(MarchingCubesVsFlyingEdges, PadBoundaryMatchesConstantPadAndIsClosed)
   const auto mesh = RunFilter<ShortFilter>(image.GetPointer(), GetParam().iso, true);
   // VTK reference: pad one voxel on every side with the image minimum.
   const auto vtkImage = ToVtk(image);
-  double     range[2];
+  double range[2];
   vtkImage->GetScalarRange(range);
   int extent[6];
   vtkImage->GetExtent(extent);
@@ -296,26 +285,22 @@ TEST_P(MarchingCubesVsFlyingEdges, PadBoundaryMatchesConstantPadAndIsClosed)
   EXPECT_GT(SignedVolume(mesh), 0.0) << "normals must point outwards";
 }
 
-INSTANTIATE_TEST_SUITE_P(SampleCTs,
-                         MarchingCubesVsFlyingEdges,
-                         ::testing::Values(CtCase{ "headsq.nrrd", 500.0 },
-                                           CtCase{ "headsq.nrrd", 1150.0 },
-                                           CtCase{ "cthead.nrrd", 500.0 },
-                                           CtCase{ "cthead.nrrd", 1300.0 }),
-                         [](const ::testing::TestParamInfo<CtCase> & info) {
+INSTANTIATE_TEST_SUITE_P(SampleCTs, MarchingCubesVsFlyingEdges,
+                         ::testing::Values(CtCase{"headsq.nrrd", 500.0}, CtCase{"headsq.nrrd", 1150.0},
+                                           CtCase{"cthead.nrrd", 500.0}, CtCase{"cthead.nrrd", 1300.0}),
+                         [](const ::testing::TestParamInfo<CtCase>& info) {
                            return std::string(info.param.file[1] == 'e' ? "headsq" : "cthead") +
                                   std::to_string(int(info.param.iso));
                          });
 
 // Values R - |x - c| (positive inside a sphere of radius R mm) sampled at the physical points of the voxels.
-FloatImage::Pointer
-SphereImage(const std::array<double, 3> & spacing, double radius, const FloatImage::DirectionType * direction,
-            Vec * centre)
+FloatImage::Pointer SphereImage(const std::array<double, 3>& spacing, double radius,
+                                const FloatImage::DirectionType* direction, Vec* centre)
 {
-  auto                   image = FloatImage::New();
-  FloatImage::SizeType   size;
+  auto image = FloatImage::New();
+  FloatImage::SizeType size;
   FloatImage::SpacingType sp;
-  FloatImage::PointType  origin;
+  FloatImage::PointType origin;
   for (int d = 0; d < 3; ++d)
   {
     size[d] = static_cast<itk::SizeValueType>(std::ceil(2.0 * (radius + 4.0) / spacing[d]));
@@ -338,7 +323,7 @@ SphereImage(const std::array<double, 3> & spacing, double radius, const FloatIma
   }
   FloatImage::PointType c;
   image->TransformContinuousIndexToPhysicalPoint(mid, c);
-  *centre = { { c[0], c[1], c[2] } };
+  *centre = {{c[0], c[1], c[2]}};
   for (itk::ImageRegionIteratorWithIndex<FloatImage> it(image, image->GetLargestPossibleRegion()); !it.IsAtEnd(); ++it)
   {
     FloatImage::PointType p;
@@ -348,13 +333,12 @@ SphereImage(const std::array<double, 3> & spacing, double radius, const FloatIma
   return image;
 }
 
-void
-ExpectSphere(const std::array<double, 3> & spacing, const FloatImage::DirectionType * direction)
+void ExpectSphere(const std::array<double, 3>& spacing, const FloatImage::DirectionType* direction)
 {
   const double radius = 20.0;
-  Vec          c;
-  const auto   image = SphereImage(spacing, radius, direction, &c);
-  const auto   mesh = RunFilter<FloatFilter>(image.GetPointer(), 0.0);
+  Vec c;
+  const auto image = SphereImage(spacing, radius, direction, &c);
+  const auto mesh = RunFilter<FloatFilter>(image.GetPointer(), 0.0);
   ASSERT_GT(mesh->GetNumberOfCells(), 1000u);
   EXPECT_TRUE(IsClosedOrientedManifold(mesh));
   const double pi = std::acos(-1.0);
@@ -364,7 +348,7 @@ ExpectSphere(const std::array<double, 3> & spacing, const FloatImage::DirectionT
   EXPECT_NEAR(volume / (4.0 / 3.0 * pi * radius * radius * radius), 1.0, 0.01);
   // Points are in physical space: on the sphere up to the chord error of a voxel.
   const double maxSpacing = *std::max_element(spacing.begin(), spacing.end());
-  double       worst = 0.0;
+  double worst = 0.0;
   for (Mesh::PointIdentifier id = 0; id < mesh->GetNumberOfPoints(); ++id)
   {
     const Vec d = Sub(P(mesh, id), c);
@@ -375,23 +359,22 @@ ExpectSphere(const std::array<double, 3> & spacing, const FloatImage::DirectionT
 
 TEST(MarchingCubes, SphereIsotropicAreaAndVolume)
 {
-  ExpectSphere({ { 0.7, 0.7, 0.7 } }, nullptr);
+  ExpectSphere({{0.7, 0.7, 0.7}}, nullptr);
 }
 
 TEST(MarchingCubes, SphereAnisotropicAreaAndVolume)
 {
-  ExpectSphere({ { 0.6, 0.75, 0.9 } }, nullptr);
+  ExpectSphere({{0.6, 0.75, 0.9}}, nullptr);
 }
 
-FloatImage::DirectionType
-Rotation(bool mirror)
+FloatImage::DirectionType Rotation(bool mirror)
 {
   // Rotation about the axis (1, 2, 2)/3 by 40 degrees, optionally followed by a mirror of x.
   const double a = 40.0 * std::acos(-1.0) / 180.0;
-  const Vec    u{ { 1.0 / 3.0, 2.0 / 3.0, 2.0 / 3.0 } };
+  const Vec u{{1.0 / 3.0, 2.0 / 3.0, 2.0 / 3.0}};
   const double cs = std::cos(a), sn = std::sin(a);
   FloatImage::DirectionType r;
-  const double              k[3][3] = { { 0, -u[2], u[1] }, { u[2], 0, -u[0] }, { -u[1], u[0], 0 } };
+  const double k[3][3] = {{0, -u[2], u[1]}, {u[2], 0, -u[0]}, {-u[1], u[0], 0}};
   for (int i = 0; i < 3; ++i)
   {
     for (int j = 0; j < 3; ++j)
@@ -417,13 +400,13 @@ Rotation(bool mirror)
 TEST(MarchingCubes, RotatedDirectionPutsPointsAtPhysicalPoints)
 {
   const auto rotation = Rotation(false);
-  ExpectSphere({ { 0.7, 0.8, 0.9 } }, &rotation);
+  ExpectSphere({{0.7, 0.8, 0.9}}, &rotation);
 }
 
 TEST(MarchingCubes, MirroredDirectionKeepsOutwardNormals)
 {
   const auto mirror = Rotation(true);
-  ExpectSphere({ { 0.7, 0.8, 0.9 } }, &mirror);
+  ExpectSphere({{0.7, 0.8, 0.9}}, &mirror);
 }
 
 TEST(MarchingCubes, DirectionMapsIndexPointsExactly)
@@ -433,7 +416,7 @@ TEST(MarchingCubes, DirectionMapsIndexPointsExactly)
   const auto image = ReadSample("headsq.nrrd");
   image->SetDirection(ShortImage::DirectionType::GetIdentity());
   const auto plain = RunFilter<ShortFilter>(image.GetPointer(), 500.0);
-  auto       rotated = ShortImage::New();
+  auto rotated = ShortImage::New();
   rotated->Graft(image);
   const auto D = Rotation(false);
   ShortImage::DirectionType direction;
@@ -449,7 +432,7 @@ TEST(MarchingCubes, DirectionMapsIndexPointsExactly)
   ASSERT_EQ(mesh->GetNumberOfPoints(), plain->GetNumberOfPoints());
   ASSERT_GT(mesh->GetNumberOfPoints(), 0u);
   const auto o = image->GetOrigin();
-  double     worst = 0.0;
+  double worst = 0.0;
   for (Mesh::PointIdentifier id = 0; id < mesh->GetNumberOfPoints(); ++id)
   {
     const Vec q = P(plain, id), p = P(mesh, id);
@@ -476,12 +459,12 @@ TEST(MarchingCubes, All256CubeCasesAreClosedManifolds)
   for (unsigned int code = 1; code < 256; ++code)
   {
     SCOPED_TRACE("case " + std::to_string(code));
-    auto                 padded = ShortImage::New();
-    ShortImage::SizeType size4 = { { 4, 4, 4 } };
+    auto padded = ShortImage::New();
+    ShortImage::SizeType size4 = {{4, 4, 4}};
     padded->SetRegions(size4);
     padded->Allocate(true);
-    auto                 cube = ShortImage::New();
-    ShortImage::SizeType size2 = { { 2, 2, 2 } };
+    auto cube = ShortImage::New();
+    ShortImage::SizeType size2 = {{2, 2, 2}};
     cube->SetRegions(size2);
     cube->Allocate(true);
     ShortImage::PointType origin;
@@ -489,10 +472,10 @@ TEST(MarchingCubes, All256CubeCasesAreClosedManifolds)
     cube->SetOrigin(origin);
     for (int v = 0; v < 8; ++v)
     {
-      const short              value = (code >> v) & 1U ? 1 : 0;
-      const ShortImage::IndexType c = { { v & 1, (v >> 1) & 1, (v >> 2) & 1 } };
+      const short value = (code >> v) & 1U ? 1 : 0;
+      const ShortImage::IndexType c = {{v & 1, (v >> 1) & 1, (v >> 2) & 1}};
       cube->SetPixel(c, value);
-      padded->SetPixel({ { c[0] + 1, c[1] + 1, c[2] + 1 } }, value);
+      padded->SetPixel({{c[0] + 1, c[1] + 1, c[2] + 1}}, value);
     }
     const auto mesh = RunFilter<ShortFilter>(padded.GetPointer(), iso);
     ASSERT_GT(mesh->GetNumberOfCells(), 0u);
@@ -519,8 +502,8 @@ TEST(MarchingCubes, TriangleNormalsPointTowardsDecreasingValues)
 {
   // Linear ramp along a tilted direction g: inside (value >= iso) is where g.x is large, so every triangle
   // normal must point along -g. (The iso-value hits no sample exactly, so no triangle is degenerate.)
-  auto                 image = FloatImage::New();
-  FloatImage::SizeType size = { { 12, 10, 9 } };
+  auto image = FloatImage::New();
+  FloatImage::SizeType size = {{12, 10, 9}};
   image->SetRegions(size);
   FloatImage::SpacingType spacing;
   spacing[0] = 0.8;
@@ -528,7 +511,7 @@ TEST(MarchingCubes, TriangleNormalsPointTowardsDecreasingValues)
   spacing[2] = 1.7;
   image->SetSpacing(spacing);
   image->Allocate();
-  const Vec g{ { 0.3, -0.5, 0.8 } };
+  const Vec g{{0.3, -0.5, 0.8}};
   for (itk::ImageRegionIteratorWithIndex<FloatImage> it(image, image->GetLargestPossibleRegion()); !it.IsAtEnd(); ++it)
   {
     FloatImage::PointType p;
@@ -538,12 +521,11 @@ TEST(MarchingCubes, TriangleNormalsPointTowardsDecreasingValues)
   const auto mesh = RunFilter<FloatFilter>(image.GetPointer(), 1.0371);
   ASSERT_GT(mesh->GetNumberOfCells(), 50u);
   std::size_t wrong = 0;
-  for (const auto & t : Triangles(mesh))
+  for (const auto& t : Triangles(mesh))
   {
     const Vec n = Cross(Sub(P(mesh, t[1]), P(mesh, t[0])), Sub(P(mesh, t[2]), P(mesh, t[0])));
     const double along = (n[0] * g[0] + n[1] * g[1] + n[2] * g[2]) / std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     wrong += along < -0.98 ? 0 : 1; // |g| = 0.99: every triangle lies in the plane g.x = iso, facing -g
-
   }
   EXPECT_EQ(wrong, 0u);
 }
@@ -555,11 +537,11 @@ TEST(MarchingCubes, DeterministicForAnyThreadCount)
   const auto two = RunFilter<ShortFilter>(image.GetPointer(), 500.0, false, 2);
   const auto seven = RunFilter<ShortFilter>(image.GetPointer(), 500.0, false, 7);
   ASSERT_GT(one->GetNumberOfPoints(), 0u);
-  for (Mesh * other : { two.GetPointer(), seven.GetPointer() })
+  for (Mesh* other : {two.GetPointer(), seven.GetPointer()})
   {
     ASSERT_EQ(one->GetNumberOfPoints(), other->GetNumberOfPoints());
-    const auto & a = one->GetPoints()->CastToSTLContainer();
-    const auto & b = other->GetPoints()->CastToSTLContainer();
+    const auto& a = one->GetPoints()->CastToSTLContainer();
+    const auto& b = other->GetPoints()->CastToSTLContainer();
     EXPECT_EQ(0, std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])));
     EXPECT_EQ(Triangles(one), Triangles(other));
   }
@@ -576,7 +558,7 @@ TEST(MarchingCubes, StandardCellsEqualCompactCells)
   ASSERT_TRUE(compact->GetCell(7, cell));
   Mesh::CellAutoPointer copy;
   cell->MakeCopy(copy);
-  EXPECT_NE(dynamic_cast<itk::TriangleCell<Mesh::CellType> *>(copy.GetPointer()), nullptr);
+  EXPECT_NE(dynamic_cast<itk::TriangleCell<Mesh::CellType>*>(copy.GetPointer()), nullptr);
   EXPECT_TRUE(std::equal(cell->PointIdsBegin(), cell->PointIdsEnd(), copy->PointIdsBegin()));
   EXPECT_EQ(cell->GetNumberOfBoundaryFeatures(1), 3u);
   Mesh::CellAutoPointer edge;
@@ -596,8 +578,8 @@ TEST(MarchingCubes, EmptySurfaceGivesEmptyMesh)
   const auto maxPlusHalf = RunFilter<ShortFilter>(image.GetPointer(), 32767.5, true);
   EXPECT_EQ(maxPlusHalf->GetNumberOfCells(), 0u);
   // A single voxel is too small for a cube, unless padded (then it is a closed octahedron around it).
-  auto                 single = ShortImage::New();
-  ShortImage::SizeType one = { { 1, 1, 1 } };
+  auto single = ShortImage::New();
+  ShortImage::SizeType one = {{1, 1, 1}};
   single->SetRegions(one);
   single->Allocate();
   single->FillBuffer(10);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Thresholds, masks and surfaces of the image stage, on the bundled CTs and on constructed volumes.
 #include "mmrepCTThresholds.h"
 #include "mmrepHeadSegmentation.h"
@@ -48,7 +50,6 @@ unsigned long Components(const mmrep::MaskImage* mask, unsigned char value)
   cc->Update();
   return cc->GetObjectCount();
 }
-
 
 } // namespace
 
@@ -139,8 +140,8 @@ TEST(ImageStageFill, EnclosedAirFilledOpenAirKept)
   EXPECT_EQ(a(16, 16, 16), 1);
   EXPECT_EQ(a(14, 14, 10), 1); // airway enclosed in every axial slice: filled
   EXPECT_EQ(a(14, 14, 0), 1);
-  EXPECT_EQ(a(6, 20, 21), 0);  // notch open within its slices: kept
-  EXPECT_EQ(a(2, 2, 2), 0);    // outside air kept
+  EXPECT_EQ(a(6, 20, 21), 0); // notch open within its slices: kept
+  EXPECT_EQ(a(2, 2, 2), 0);   // outside air kept
   EXPECT_EQ(Components(m, 0), 1u);
 }
 
@@ -180,7 +181,9 @@ TEST_P(ImageStageHead, OneHeadOneSkullClosedSurfaces)
 }
 
 INSTANTIATE_TEST_SUITE_P(BundledCTs, ImageStageHead, ::testing::Values("cthead.nrrd", "headsq.nrrd"),
-                         [](const auto& info) { return std::string(info.param).substr(0, std::string(info.param).find('.')); });
+                         [](const auto& info) {
+                           return std::string(info.param).substr(0, std::string(info.param).find('.'));
+                         });
 
 TEST(ImageStageHeadErrors, EmptySegmentationAndNoHead)
 {

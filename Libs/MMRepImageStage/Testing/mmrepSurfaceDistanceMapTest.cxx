@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Surface distance map vs exact distances to the triangles computed by VTK's cell locator.
 #include "mmrepSurfaceDistanceMap.h"
 

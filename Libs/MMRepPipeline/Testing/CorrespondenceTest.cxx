@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Correspondence of the default speaker model (half-face registration), against known truths:
 //  - the atlas onto its own CT: on the fitted left half the answer is the identity;
 //  - a synthetic subject (known warp F): registered nodes against F(atlas node), beside the

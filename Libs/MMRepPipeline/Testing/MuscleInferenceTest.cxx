@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Muscle inference against independent references: an analytic transform applied to the atlas
 // track points directly, VTK's own point location, and a displacement field sampled from the
 // same transform.
@@ -104,7 +106,8 @@ TEST(MuscleInference, DisplacementFieldGivesTheSamePointsWithinInterpolationErro
   double worst = 0;
   for (const auto& [name, track] : atlas.muscles)
     for (auto n : track.nodes)
-      worst = std::max(worst, (exact.nodes[static_cast<std::size_t>(n)] - sampled.nodes[static_cast<std::size_t>(n)]).norm());
+      worst =
+        std::max(worst, (exact.nodes[static_cast<std::size_t>(n)] - sampled.nodes[static_cast<std::size_t>(n)]).norm());
   // Linear interpolation of a field whose second derivatives are below 1.5/40² mm⁻¹, 1 mm voxels,
   // stored in float: well under 0.01 mm.
   EXPECT_LT(worst, 0.01);

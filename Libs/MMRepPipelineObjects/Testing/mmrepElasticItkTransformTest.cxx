@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // ElasticItkTransform used as ITK uses transforms: point by point equal to the project's maps,
 // composed in itk::CompositeTransform, applied to a mesh by itk::TransformMeshFilter and to an
 // image by itk::ResampleImageFilter, vectors through the exact Jacobian.
@@ -54,8 +56,14 @@ ElasticTransform SomeElasticMap(unsigned seed, double scale)
   return t;
 }
 
-Point P(const Eigen::Vector3d& x) { return Point(x.data()); }
-Eigen::Vector3d E(const Point& p) { return {p[0], p[1], p[2]}; }
+Point P(const Eigen::Vector3d& x)
+{
+  return Point(x.data());
+}
+Eigen::Vector3d E(const Point& p)
+{
+  return {p[0], p[1], p[2]};
+}
 
 class ElasticItkTransformTest : public ::testing::Test
 {
@@ -153,7 +161,8 @@ TEST_F(ElasticItkTransformTest, VectorsGoThroughTheJacobianOfTheComposition)
 
 TEST_F(ElasticItkTransformTest, TransformMeshFilterMovesEveryPoint)
 {
-  using Mesh = itk::Mesh<double, 3, itk::DefaultStaticMeshTraits<double, 3, 3, double, double, double>>; // double points
+  using Mesh =
+    itk::Mesh<double, 3, itk::DefaultStaticMeshTraits<double, 3, 3, double, double, double>>; // double points
   auto mesh = Mesh::New();
   const auto xs = Sample(300);
   for (std::size_t i = 0; i < xs.size(); ++i)
@@ -201,7 +210,8 @@ TEST_F(ElasticItkTransformTest, ResampleImageFilterSamplesTheInputAtTheMappedPoi
   resample->SetDefaultPixelValue(-1e9);
   resample->Update();
   double worst = 0;
-  for (itk::ImageRegionIteratorWithIndex<Image> it(resample->GetOutput(), resample->GetOutput()->GetLargestPossibleRegion());
+  for (itk::ImageRegionIteratorWithIndex<Image> it(resample->GetOutput(),
+                                                   resample->GetOutput()->GetLargestPossibleRegion());
        !it.IsAtEnd(); ++it)
   {
     Point x;

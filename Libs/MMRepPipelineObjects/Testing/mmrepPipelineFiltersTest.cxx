@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The stage filters as VTK algorithms: the same results as the free functions they wrap (the
 // surfaces, the repair), an independent truth for the muscle inference (an affine map keeps every
 // track point's element and parametric coordinates), progress events that rise to 1, abort inside
@@ -218,12 +220,20 @@ TEST(PipelineFilters, MusclesThroughAnAffineItkTransformKeepTheirElementsAndPara
   const auto atlasMesh = mmrep::ReadFEMesh(kAtlas);
   auto transform = itk::AffineTransform<double, 3>::New();
   itk::AffineTransform<double, 3>::MatrixType m;
-  m(0, 0) = 1.05; m(0, 1) = 0.02; m(0, 2) = -0.01;
-  m(1, 0) = -0.03; m(1, 1) = 0.97; m(1, 2) = 0.04;
-  m(2, 0) = 0.01; m(2, 1) = -0.02; m(2, 2) = 1.02;
+  m(0, 0) = 1.05;
+  m(0, 1) = 0.02;
+  m(0, 2) = -0.01;
+  m(1, 0) = -0.03;
+  m(1, 1) = 0.97;
+  m(1, 2) = 0.04;
+  m(2, 0) = 0.01;
+  m(2, 1) = -0.02;
+  m(2, 2) = 1.02;
   transform->SetMatrix(m);
   itk::AffineTransform<double, 3>::OutputVectorType t;
-  t[0] = 3; t[1] = -2; t[2] = 5;
+  t[0] = 3;
+  t[1] = -2;
+  t[2] = 5;
   transform->SetTranslation(t);
   // The subject: the atlas's solid nodes through the map, its muscle nodes left where they were.
   auto subject = atlasMesh;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Hexahedron measures against vtkMeshQuality (VTK 9.1) and independent hand values.
 #include "QualityTestCells.h"
 #include "mmrepHexQuality.h"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Per-mesh evaluation: agreement with the vtkMeshQuality filter, thread-count independence,
 // corner Jacobians, summary statistics and errors.
 #include "QualityTestCells.h"
@@ -106,7 +108,7 @@ TEST(QualityMesh, EqualsVtkMeshQualityFilter)
     for (std::size_t e = 0; e < mesh.elements.size(); ++e)
     {
       const ElementType type = mesh.elements[e].type;
-      const int vtkMeasure = type == ElementType::Hexahedron ? measures[k].hex
+      const int vtkMeasure = type == ElementType::Hexahedron    ? measures[k].hex
                              : type == ElementType::Tetrahedron ? measures[k].tet
                                                                 : -1;
       if (vtkMeasure < 0)

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Test cells (unit, sheared, tapered, twisted, randomly perturbed, inverted, mirrored, degenerate)
 // and helpers to evaluate the same cell with VTK.
 #pragma once
@@ -25,8 +27,7 @@
 namespace mmrep::quality::test
 {
 
-template <std::size_t N>
-struct NamedCell
+template <std::size_t N> struct NamedCell
 {
   std::string name;
   std::array<Point3, N> nodes;
@@ -146,8 +147,7 @@ inline std::array<Point3, 6> UnitWedge()
   return {Point3(0, 0, 0), Point3(0.5, h, 0), Point3(1, 0, 0), Point3(0, 0, 1), Point3(0.5, h, 1), Point3(1, 0, 1)};
 }
 
-template <class CellType, std::size_t N>
-vtkSmartPointer<CellType> MakeVtkCell(const std::array<Point3, N>& p)
+template <class CellType, std::size_t N> vtkSmartPointer<CellType> MakeVtkCell(const std::array<Point3, N>& p)
 {
   auto cell = vtkSmartPointer<CellType>::New();
   for (std::size_t i = 0; i < N; ++i)

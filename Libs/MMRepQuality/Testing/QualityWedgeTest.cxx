@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Wedge measures. VTK 9.1's vtkMeshQuality has none, so the references are independent:
 // vtkWedge::InterpolationDerivs at the corner parametric coordinates (isoparametric Jacobian) for the
 // corner determinants' values and signs, and hand-computed values on right prisms. VTK 9.1's Verdict

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Test surfaces for the registration tests: bundled CT skins through the image stage (computed
 // once per test binary) and an analytic head-like shape with an exact mirror symmetry.
 #pragma once
@@ -80,9 +82,9 @@ inline vtkSmartPointer<vtkPolyData> SymmetricHead(const Eigen::Matrix3d& rotatio
     pts->GetPoint(i, q);
     const Eigen::Vector3d d = Eigen::Vector3d(q[0], q[1], q[2]).normalized();
     const Eigen::Vector3d flipped(-d.x(), d.y(), d.z());
-    double r = 1.0 + 0.25 * bump(d, {0, -0.95, 0.1}, 0.12)                                 // nose
-               + 0.12 * (bump(d, {0.98, 0.05, 0.0}, 0.1) + bump(flipped, {0.98, 0.05, 0.0}, 0.1)) // ears
-               + 0.10 * bump(d, {0, -0.6, -0.75}, 0.2)                                      // chin
+    double r = 1.0 + 0.25 * bump(d, {0, -0.95, 0.1}, 0.12)                                         // nose
+               + 0.12 * (bump(d, {0.98, 0.05, 0.0}, 0.1) + bump(flipped, {0.98, 0.05, 0.0}, 0.1))  // ears
+               + 0.10 * bump(d, {0, -0.6, -0.75}, 0.2)                                             // chin
                + 0.05 * (bump(d, {0.5, -0.7, 0.4}, 0.15) + bump(flipped, {0.5, -0.7, 0.4}, 0.15)); // brows
     const Eigen::Vector3d p(75 * r * d.x(), 95 * r * d.y(), 110 * r * d.z());
     const Eigen::Vector3d moved = rotation * p + translation;

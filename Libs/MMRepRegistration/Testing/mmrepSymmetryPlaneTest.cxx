@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Symmetry plane: exact recovery on an exactly symmetric shape, and equivariance under known head
 // tilts on the real skins of the bundled CTs (the plane of the moved head must be the moved plane).
 #include "mmrepRegistrationTestData.h"
@@ -115,9 +117,9 @@ TEST_P(SymmetryPlaneTilted, BundledHeadGivesTheTiltedPlane)
       const Eigen::Vector3d movedCentre = centre + shift;
       const double angle = AngleDeg(est.plane.normal, expected.normal);
       const double offset = std::abs(est.plane.SignedDistance(expected.Project(movedCentre)));
-      std::cout << name << " roll " << t.roll << " yaw " << t.yaw << " pitch " << t.pitch << ": normal error "
-                << angle << " deg, offset at centre " << offset << " mm, rms " << est.rmsResidual << " mm, "
-                << est.iterations << " iterations\n";
+      std::cout << name << " roll " << t.roll << " yaw " << t.yaw << " pitch " << t.pitch << ": normal error " << angle
+                << " deg, offset at centre " << offset << " mm, rms " << est.rmsResidual << " mm, " << est.iterations
+                << " iterations\n";
       EXPECT_LT(angle, 1.0) << name << " roll " << t.roll << " yaw " << t.yaw;
       EXPECT_LT(offset, 1.0) << name << " roll " << t.roll << " yaw " << t.yaw;
       worstAngle = std::max(worstAngle, angle);
@@ -128,7 +130,9 @@ TEST_P(SymmetryPlaneTilted, BundledHeadGivesTheTiltedPlane)
 }
 
 INSTANTIATE_TEST_SUITE_P(BundledCTs, SymmetryPlaneTilted, ::testing::Values("cthead.nrrd", "headsq.nrrd"),
-                         [](const auto& info) { return std::string(info.param).substr(0, std::string(info.param).find('.')); });
+                         [](const auto& info) {
+                           return std::string(info.param).substr(0, std::string(info.param).find('.'));
+                         });
 
 TEST(SymmetryPlane, EmptyOrTrianglelessSurfaceThrows)
 {

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Repair benchmark on the real atlas (not a ctest): tangles of Resources/Atlas/FaceAtlas.vtu
 // (mmrepAtlasTangles.h) repaired against the atlas's skin and skull reference surfaces and its
 // mid-sagittal plane. Reports the success rate (0 inverted and min scaled Jacobian >= 0.3), the
@@ -21,12 +23,13 @@ int main(int argc, char* argv[])
   const int scalingCases = argc > 3 ? std::atoi(argv[3]) : 10;
   const std::string folder = argc > 4 ? argv[4] : std::string(MMREP_SOURCE_DIR) + "/Resources/Atlas";
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
-  const testing::MeshTangleContext context =
-    testing::LoadTangleContext(folder + "/FaceAtlas.vtu", folder + "/FaceAtlasSkin.vtp", folder + "/FaceAtlasSkull.vtp");
+  const testing::MeshTangleContext context = testing::LoadTangleContext(
+    folder + "/FaceAtlas.vtu", folder + "/FaceAtlasSkin.vtp", folder + "/FaceAtlasSkull.vtp");
   std::printf("atlas: %zu nodes, %zu solid elements, mean edge %.2f mm, symmetric %s\n", context.mesh.nodes.size(),
               context.mesh.SolidElementCount(), context.meanSize, context.partner.empty() ? "no" : "yes");
   std::printf("tangles: noise up to %.2f element sizes, 0-4 folds, warps of 0.5-2 element sizes in half the cases, "
-              "symmetric for even seeds\n", maximumNoise);
+              "symmetric for even seeds\n",
+              maximumNoise);
 
   int ok = 0, symmetricCases = 0;
   double seconds = 0, slowest = 0, lipsLoss = -1e300, symmetry = 0, bad = 0, inverted = 0, minAfter = 1e300;
@@ -74,15 +77,16 @@ int main(int argc, char* argv[])
               "worst min scaled Jacobian after %.3f\n",
               ok, cases, 100.0 * ok / cases, inverted / cases, bad / cases, minAfter);
   std::printf("lips: largest increase of the max distance to the skin %.2e mm; symmetry error (%d symmetric cases) "
-              "%.1e relative\n", lipsLoss, symmetricCases, symmetry);
+              "%.1e relative\n",
+              lipsLoss, symmetricCases, symmetry);
   std::printf("time: mean %.3f s, slowest %.3f s per atlas (sequential)\n", seconds / cases, slowest);
 
   // Scaling: the lower 25 %, 50 %, 75 % and all of the atlas, same tangles.
   std::printf("%9s %8s %6s %12s %12s\n", "fraction", "elements", "ok", "s per mesh", "us/element");
   for (const double fraction : {0.25, 0.5, 0.75, 1.0})
   {
-    const testing::MeshTangleContext part = testing::MakeTangleContext(
-      testing::CropMesh(context.mesh, context.plane, fraction), context.skin, context.skull);
+    const testing::MeshTangleContext part =
+      testing::MakeTangleContext(testing::CropMesh(context.mesh, context.plane, fraction), context.skin, context.skull);
     int partOk = 0;
     double partSeconds = 0;
     for (int k = 0; k < scalingCases; ++k)

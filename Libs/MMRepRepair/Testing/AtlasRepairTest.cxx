@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Repair of tangled copies of the shipped atlas (Resources/Atlas): a reduced AtlasRepairBenchmark
 // with assertions. Quality is checked with vtkMeshQuality, symmetry against the mirror partners,
 // accuracy as distances of the nodes to the reference surfaces.
@@ -96,8 +98,8 @@ TEST(RepairAtlas, TanglesRepairedAccuratelyAndSymmetrically)
     // below 0.3, flat lip-slit epidermis and hypodermis where the bone is near (the 99 %
     // success target is not met: Libs/MMRepRepair/README.md). What the repair must still do:
     // remove almost every inverted element and leave very few below the threshold.
-    std::printf("seed %u: %d inverted before, %d after; %zu elements below 0.3 after, min %.3f\n", tangle.seed, invertedVTK,
-                invertedAfter, report.failedElements.size(), minAfter);
+    std::printf("seed %u: %d inverted before, %d after; %zu elements below 0.3 after, min %.3f\n", tangle.seed,
+                invertedVTK, invertedAfter, report.failedElements.size(), minAfter);
     EXPECT_LE(invertedAfter * 20, invertedVTK); // at least 95 % of the inverted elements repaired
     EXPECT_LE(report.failedElements.size(), mesh.SolidElementCount() / 500);
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Repair benchmark (not a ctest): success rate over generated tangled shells and time per mesh
 // against element count, to check the linear scaling.
 // Usage: MeshRepairBenchmark [cases per size = 20] [number of sizes = 4] [maximum noise = 0.18]

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The mirror map stored in the FE model (FEMesh::mirror, written by the atlas builder): on the
 // shipped atlas it is an involution of mirror images about the fitted mid-sagittal plane, it
 // survives the .vtu and .vtk formats, and the repair moving mirror partners by it gives the same
@@ -97,9 +99,9 @@ TEST(MirrorMap, SurvivesWriteAndRead)
 
 TEST(MirrorMap, RepairByStoredMapEqualsGeometricPairing)
 {
-  static const auto c = mmrep::testing::LoadTangleContext(
-    MMREP_SOURCE_DIR "/Resources/Atlas/FaceAtlas.vtu", MMREP_SOURCE_DIR "/Resources/Atlas/FaceAtlasSkin.vtp",
-    MMREP_SOURCE_DIR "/Resources/Atlas/FaceAtlasSkull.vtp");
+  static const auto c = mmrep::testing::LoadTangleContext(MMREP_SOURCE_DIR "/Resources/Atlas/FaceAtlas.vtu",
+                                                          MMREP_SOURCE_DIR "/Resources/Atlas/FaceAtlasSkin.vtp",
+                                                          MMREP_SOURCE_DIR "/Resources/Atlas/FaceAtlasSkull.vtp");
   ASSERT_TRUE(c.mesh.HasMirrorMap());
   FEMesh stored = mmrep::testing::TangleMesh(c, mmrep::testing::RandomTangle(2));
   ASSERT_TRUE(stored.HasMirrorMap());

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Mesh repair on the shell atlas stand-in and its generated tangles; quality is checked
 // independently with vtkMeshQuality, surface distances with brute force over the triangles.
 #include "mmrepFEMeshIO.h"
@@ -75,7 +77,8 @@ double BruteForceDistance(vtkPolyData* surface, const Point3& p)
     surface->GetPoint(ids->GetId(1), b);
     surface->GetPoint(ids->GetId(2), d);
     // Cheap reject: farther than the best from the triangle's first vertex by more than its size.
-    const double size = std::sqrt(vtkMath::Distance2BetweenPoints(a, b)) + std::sqrt(vtkMath::Distance2BetweenPoints(a, d));
+    const double size =
+      std::sqrt(vtkMath::Distance2BetweenPoints(a, b)) + std::sqrt(vtkMath::Distance2BetweenPoints(a, d));
     if (std::sqrt(vtkMath::Distance2BetweenPoints(a, p.data())) - size > best)
       continue;
     double closest[3], pcoords[3], weights[3], d2 = 0;
@@ -207,8 +210,8 @@ TEST(RepairMesh, SurfaceNodesStayOnSurfacesAndLipsKeepAccuracy)
     FEMesh mesh = input;
     const RepairReport report = RepairMesh(mesh, WithSurfaces(atlas, t.symmetric));
     ASSERT_TRUE(report.success) << "seed " << seed;
-    for (const auto& [set, surface] : {std::pair<std::string, vtkPolyData*>{"skin", atlas.skin.Get()},
-                                       {"skull", atlas.skull.Get()}})
+    for (const auto& [set, surface] :
+         {std::pair<std::string, vtkPolyData*>{"skin", atlas.skin.Get()}, {"skull", atlas.skull.Get()}})
       for (const auto id : mesh.nodeSets.at(set))
       {
         if (mesh.nodes[id] == input.nodes[id])
@@ -237,8 +240,8 @@ TEST(RepairMesh, SymmetricInputStaysSymmetric)
   const ShellAtlas& atlas = Atlas();
   const std::vector<std::int32_t> partner = GridPartners(atlas);
   // A general plane too: the whole model rotated and shifted, mirror images then carry rounding.
-  const Eigen::Isometry3d pose = Eigen::Translation3d(12, -5, 30) *
-                                 Eigen::AngleAxisd(0.4, Eigen::Vector3d(0.3, 1, 0.2).normalized());
+  const Eigen::Isometry3d pose =
+    Eigen::Translation3d(12, -5, 30) * Eigen::AngleAxisd(0.4, Eigen::Vector3d(0.3, 1, 0.2).normalized());
   for (const bool rotated : {false, true})
     for (std::uint32_t seed = 2; seed <= 8; seed += 2)
     {

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepAtlasTangles.h"
 
 #include "mmrepLipContact.h"
@@ -276,7 +278,8 @@ FEMesh TangleMesh(const MeshTangleContext& c, const TangleOptions& t)
     {
       const Point3& nn = c.normal[i];
       const Point3 t1 = nn.unitOrthogonal(), t2 = nn.cross(t1);
-      d[i] = t.noise * (c.size[i] * (random.Gaussian() * t1 + random.Gaussian() * t2) + c.layer[i] * random.Gaussian() * nn);
+      d[i] =
+        t.noise * (c.size[i] * (random.Gaussian() * t1 + random.Gaussian() * t2) + c.layer[i] * random.Gaussian() * nn);
     }
 
   // Folds: a node pushed 1.3 to 1.7 times the way to one of its edge neighbours (a surface node
@@ -438,7 +441,7 @@ double SymmetryError(const FEMesh& mesh, const MeshTangleContext& c)
   double worst = 0;
   for (std::size_t i = 0; i < mesh.nodes.size() && !c.partner.empty(); ++i)
     if (!c.neighbours[i].empty()) // nodes of solid elements (embedded muscle points follow them)
-    worst = std::max(worst, (c.plane.Mirror(mesh.nodes[i]) - mesh.nodes[c.partner[i]]).norm());
+      worst = std::max(worst, (c.plane.Mirror(mesh.nodes[i]) - mesh.nodes[c.partner[i]]).norm());
   return worst / c.diagonal;
 }
 

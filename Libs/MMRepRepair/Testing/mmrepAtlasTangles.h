@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Tangles of a real atlas mesh (Resources/Atlas/FaceAtlas.vtu and its reference surfaces), as a
 // registration could leave it: random node noise (tangential of the element size, through the
 // thickness of the thinnest adjacent layer), local folds (a node pushed past one of its edge
@@ -29,18 +31,18 @@ struct MeshTangleContext
   FEMesh mesh;
   vtkSmartPointer<vtkPolyData> skin, skull;
   vtkSmartPointer<vtkStaticCellLocator> skinLocator, skullLocator;
-  Plane plane;                        // least-squares plane of the `midsagittal` nodes
+  Plane plane; // least-squares plane of the `midsagittal` nodes
   // Mirror node (itself on the plane and for nodes of no solid element); empty when not symmetric.
   std::vector<std::int32_t> partner;
-  std::vector<double> size;           // per node: mean length of its edges to the same level (mm)
-  std::vector<double> layer;          // per node: its shortest edge to another level (mm)
-  std::vector<Point3> normal;         // per node: outward skin normal at its closest skin point
-  std::vector<double> skinDistance;   // per node: distance to the skin (mm)
-  std::vector<std::int32_t> top;      // per node: skin node of its through-thickness column (-1: none)
+  std::vector<double> size;                          // per node: mean length of its edges to the same level (mm)
+  std::vector<double> layer;                         // per node: its shortest edge to another level (mm)
+  std::vector<Point3> normal;                        // per node: outward skin normal at its closest skin point
+  std::vector<double> skinDistance;                  // per node: distance to the skin (mm)
+  std::vector<std::int32_t> top;                     // per node: skin node of its through-thickness column (-1: none)
   std::vector<std::vector<std::int32_t>> neighbours; // edge neighbours per node, ascending
-  std::vector<double> depth;          // 0 skin, 1/3 and 2/3 the inner levels, 1 skull/inner surface
+  std::vector<double> depth;                         // 0 skin, 1/3 and 2/3 the inner levels, 1 skull/inner surface
   double meanSize = 0;
-  double diagonal = 0;                // bounding-box diagonal (mm)
+  double diagonal = 0; // bounding-box diagonal (mm)
 };
 
 // Reads the atlas mesh and surfaces (.vtu, .vtp). Throws std::runtime_error on unreadable files.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepTangledMeshGenerator.h"
 
 #include <vtkCellArray.h>
@@ -67,7 +69,7 @@ ShellAtlas MakeShellAtlas(const ShellAtlasOptions& o)
         Element e;
         e.type = ElementType::Hexahedron;
         e.layer = layers[k];
-        e.nodes = {g.Node(i, j, k), g.Node(i + 1, j, k), g.Node(i + 1, j, k + 1), g.Node(i, j, k + 1),
+        e.nodes = {g.Node(i, j, k),     g.Node(i + 1, j, k),     g.Node(i + 1, j, k + 1),     g.Node(i, j, k + 1),
                    g.Node(i, j + 1, k), g.Node(i + 1, j + 1, k), g.Node(i + 1, j + 1, k + 1), g.Node(i, j + 1, k + 1)};
         mesh.elements.push_back(e);
       }

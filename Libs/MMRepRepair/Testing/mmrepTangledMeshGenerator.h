@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Test stand-in for the face atlas and its registration defects: a 3-layer hexahedral shell cut
 // from an ellipsoidal shell (the front of a head: epidermis, dermis, hypodermis), symmetric about
 // x = 0, with node sets skin (outer), skull (inner), lips (a patch of outer nodes) and midsagittal
@@ -42,13 +44,13 @@ private:
 
 struct ShellAtlasOptions
 {
-  int columns = 24;                      // elements left to right (even: x = 0 is a node column)
-  int rows = 20;                         // elements bottom to top
+  int columns = 24;                       // elements left to right (even: x = 0 is a node column)
+  int rows = 20;                          // elements bottom to top
   Eigen::Vector3d skinAxes{80, 100, 115}; // outer ellipsoid semi-axes (x, y, z), mm
-  double thickness = 14;                 // inner ellipsoid axes = outer axes - thickness
-  double halfWidth = 1.3;                // azimuth range [-halfWidth, halfWidth], radians
-  double halfHeight = 0.95;              // elevation range, radians
-  int surfaceRefinement = 4;             // surface triangles per element edge (mesh nodes are vertices)
+  double thickness = 14;                  // inner ellipsoid axes = outer axes - thickness
+  double halfWidth = 1.3;                 // azimuth range [-halfWidth, halfWidth], radians
+  double halfHeight = 0.95;               // elevation range, radians
+  int surfaceRefinement = 4;              // surface triangles per element edge (mesh nodes are vertices)
 };
 
 struct ShellAtlas
@@ -69,10 +71,10 @@ ShellAtlas MakeShellAtlas(const ShellAtlasOptions& options = {});
 struct TangleOptions
 {
   std::uint32_t seed = 1;
-  bool symmetric = false;   // mirror every perturbation (the result stays symmetric about x = 0)
-  double noise = 0.2;       // Gaussian node noise, standard deviation in element sizes
-  int folds = 2;            // nodes pushed through a neighbour
-  double warp = 0;          // amplitude of the smooth warps, in element sizes
+  bool symmetric = false; // mirror every perturbation (the result stays symmetric about x = 0)
+  double noise = 0.2;     // Gaussian node noise, standard deviation in element sizes
+  int folds = 2;          // nodes pushed through a neighbour
+  double warp = 0;        // amplitude of the smooth warps, in element sizes
 };
 
 // The atlas with perturbed nodes (same sets and elements).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Volumetric locking of the hexahedron types on the face tissue: a cantilever block clamped at one
 // end under a small tip load, against Timoshenko's tip deflection δ = PL³/(3EI) + PL/(κGA) with
 // E = 2μ(1+ν), G = μ (the tissue's initial shear modulus) and κ = 10(1+ν)/(12+11ν) (rectangle).
@@ -42,8 +44,10 @@ Deflection TipDeflection(const std::string& hexahedronType, double poissonRatio)
         if (i == kNx)
         {
           const double wy = (j == 0 || j == kNy ? 0.5 : 1.0) / kNy;
-          const double below = k > 0 ? kLayerTop[static_cast<std::size_t>(k)] - kLayerTop[static_cast<std::size_t>(k - 1)] : 0;
-          const double above = k < nz ? kLayerTop[static_cast<std::size_t>(k + 1)] - kLayerTop[static_cast<std::size_t>(k)] : 0;
+          const double below =
+            k > 0 ? kLayerTop[static_cast<std::size_t>(k)] - kLayerTop[static_cast<std::size_t>(k - 1)] : 0;
+          const double above =
+            k < nz ? kLayerTop[static_cast<std::size_t>(k + 1)] - kLayerTop[static_cast<std::size_t>(k)] : 0;
           tip.emplace_back(id(i, j, k), wy * (below + above) / (2 * kHeight));
         }
       }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The half-face model (mmrepHalfModel.h) of the shipped atlas: the cut against counts computed here
 // from the full model, the symmetry condition as CalculiX reads it from the exported .inp and from
 // the simulation deck, and the same symmetric gesture on the full model and on the half.
@@ -247,7 +249,8 @@ TEST(HalfModel, ModelsThatCannotBeCutAreRefused)
   for (int i = 0; i < 2; ++i)
   {
     Element e;
-    e.nodes = {id(i, 0, 0), id(i + 1, 0, 0), id(i + 1, 1, 0), id(i, 1, 0), id(i, 0, 1), id(i + 1, 0, 1), id(i + 1, 1, 1), id(i, 1, 1)};
+    e.nodes = {id(i, 0, 0), id(i + 1, 0, 0), id(i + 1, 1, 0), id(i, 1, 0),
+               id(i, 0, 1), id(i + 1, 0, 1), id(i + 1, 1, 1), id(i, 1, 1)};
     e.layer = TissueLayer::Dermis;
     mesh.elements.push_back(e);
   }
@@ -255,7 +258,7 @@ TEST(HalfModel, ModelsThatCannotBeCutAreRefused)
   EXPECT_NO_THROW(LeftHalfModel(mesh)); // cut along x = 0: one element each side
   FEMesh moved = mesh;
   for (auto n : moved.nodeSets["midsagittal"])
-    moved.nodes[static_cast<std::size_t>(n)].x() = 0.3; // plane x = 0.3
+    moved.nodes[static_cast<std::size_t>(n)].x() = 0.3;         // plane x = 0.3
   moved.nodes[static_cast<std::size_t>(id(0, 0, 0))].x() = 0.6; // the right element now reaches across it
   try
   {
@@ -340,7 +343,8 @@ U
   for (const auto& v : u)
     largest = std::max(largest, v.norm());
   std::printf("exported half .inp under oblique gravity: plane nodes |u.n| max %.3g mm, in-plane max %.3f mm; largest "
-              "|u| %.3f mm\n", normal, inPlane, largest);
+              "|u| %.3f mm\n",
+              normal, inPlane, largest);
   EXPECT_LT(normal, 1e-6);
   EXPECT_GT(inPlane, 0.01);
   EXPECT_GT(largest, 0.01);
@@ -355,9 +359,11 @@ TEST(HalfModel, FEBioAndGmshExportsDeclareTheSymmetryBoundary)
   const std::string feb = Slurp(dir / "half.feb");
   const auto faces = SymmetryBoundaryFaces(half);
   // Independent count: hexahedron faces with four plane nodes (the atlas's plane faces are quads).
-  std::set<std::int32_t> planeNodes(half.nodeSets.at(kSymmetryBoundarySet).begin(), half.nodeSets.at(kSymmetryBoundarySet).end());
+  std::set<std::int32_t> planeNodes(half.nodeSets.at(kSymmetryBoundarySet).begin(),
+                                    half.nodeSets.at(kSymmetryBoundarySet).end());
   std::size_t expected = 0;
-  static const int hexFaces[6][4] = {{0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4}, {3, 7, 6, 2}, {0, 3, 2, 1}, {4, 5, 6, 7}};
+  static const int hexFaces[6][4] = {{0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4},
+                                     {3, 7, 6, 2}, {0, 3, 2, 1}, {4, 5, 6, 7}};
   for (const auto& e : half.elements)
     if (e.type == ElementType::Hexahedron)
       for (const auto& f : hexFaces)
@@ -371,8 +377,8 @@ TEST(HalfModel, FEBioAndGmshExportsDeclareTheSymmetryBoundary)
   const std::string symmetrySurface = feb.substr(from, feb.find("</Surface>", from) - from);
   std::size_t quads = 0;
   const Plane plane = SymmetryPlaneOf(half);
-  for (auto it = std::sregex_iterator(symmetrySurface.begin(), symmetrySurface.end(), quad); it != std::sregex_iterator();
-       ++it)
+  for (auto it = std::sregex_iterator(symmetrySurface.begin(), symmetrySurface.end(), quad);
+       it != std::sregex_iterator(); ++it)
   {
     ++quads;
     std::vector<Point3> p;
@@ -392,10 +398,12 @@ TEST(HalfModel, FEBioAndGmshExportsDeclareTheSymmetryBoundary)
   WriteFEMesh(half, (dir / "half.msh").string());
   const std::string msh = Slurp(dir / "half.msh");
   EXPECT_TRUE(std::regex_search(msh, std::regex("\n0 \\d+ \"symmetryBoundary\"\n")));
-  const int gmsh = std::system(("gmsh -check '" + (dir / "half.msh").string() + "' > '" + (dir / "gmsh.log").string() + "' 2>&1").c_str());
+  const int gmsh = std::system(
+    ("gmsh -check '" + (dir / "half.msh").string() + "' > '" + (dir / "gmsh.log").string() + "' 2>&1").c_str());
   EXPECT_TRUE(gmsh == 0 || WEXITSTATUS(gmsh) == 1); // 1: it found errors, which must be only these:
   // Gmsh's only complaints may be the mouth slit's coincident twins (the slit by design).
-  const std::string log = std::regex_replace(Slurp(dir / "gmsh.log"), std::regex("Error *: [0-9]+ duplicate (nodes|elements)[^\n]*\n"), "");
+  const std::string log =
+    std::regex_replace(Slurp(dir / "gmsh.log"), std::regex("Error *: [0-9]+ duplicate (nodes|elements)[^\n]*\n"), "");
   EXPECT_EQ(log.find("Error"), std::string::npos) << Slurp(dir / "gmsh.log");
 }
 
@@ -442,7 +450,8 @@ TEST(HalfModel, HalfAtlasSimulatesTheSymmetricSmileLikeTheFullModel)
         const double diff = (hm.displacement - fm.displacement).norm();
         std::printf("  %-20s full (%7.3f %7.3f %7.3f)  half (%7.3f %7.3f %7.3f)  difference %.4f mm = %.2f %% of |u|\n",
                     fm.name.c_str(), fm.displacement.x(), fm.displacement.y(), fm.displacement.z(), hm.displacement.x(),
-                    hm.displacement.y(), hm.displacement.z(), diff, 100 * diff / std::max(fm.displacement.norm(), 1e-12));
+                    hm.displacement.y(), hm.displacement.z(), diff,
+                    100 * diff / std::max(fm.displacement.norm(), 1e-12));
         // 5 % of the landmark's motion; for landmarks that barely move (an eye corner in a smile,
         // a hundredth of the mouth corner's motion) 5 % of a tenth of the largest motion.
         EXPECT_LE(diff, 0.05 * std::max(fm.displacement.norm(), 0.1 * largest)) << fm.name;

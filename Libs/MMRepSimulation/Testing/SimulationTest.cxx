@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Unit tests of the CalculiX deck, runner and .frd reader on small blocks with known answers.
 #include "mmrepMuscleActivation.h"
 
@@ -31,8 +33,8 @@ FEMesh Block(int nx, int ny, int nz, double h, TissueLayer layer = TissueLayer::
         Element e;
         e.type = ElementType::Hexahedron;
         e.layer = layer;
-        e.nodes = {id(i, j, k),         id(i + 1, j, k),         id(i + 1, j + 1, k),         id(i, j + 1, k),
-                   id(i, j, k + 1),     id(i + 1, j, k + 1),     id(i + 1, j + 1, k + 1),     id(i, j + 1, k + 1)};
+        e.nodes = {id(i, j, k),     id(i + 1, j, k),     id(i + 1, j + 1, k),     id(i, j + 1, k),
+                   id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)};
         mesh.elements.push_back(e);
       }
   return mesh;
@@ -166,8 +168,8 @@ TEST(Simulation, BlockMuscleShortensAndIsSymmetric)
   const auto& t = mesh.muscles.at("M");
   const Point3 first = r.displacements[static_cast<std::size_t>(t.nodes.front())];
   const Point3 last = r.displacements[static_cast<std::size_t>(t.nodes.back())];
-  EXPECT_GT(first.x(), 0.1);                      // pulled toward the middle
-  EXPECT_NEAR(last.x(), -first.x(), 1e-3);        // mirror symmetry of block and track
+  EXPECT_GT(first.x(), 0.1);               // pulled toward the middle
+  EXPECT_NEAR(last.x(), -first.x(), 1e-3); // mirror symmetry of block and track
   EXPECT_NEAR(last.z(), first.z(), 1e-3);
   ASSERT_EQ(r.muscles.size(), 1u);
   EXPECT_LT(r.muscles[0].length, r.muscles[0].restLength);
@@ -184,11 +186,11 @@ TEST(Simulation, CableLawIsHillType)
 {
   const sim::CableModel c; // γ = 0.45, k = 0.05
   const double fmax = 3, L0 = 4;
-  EXPECT_DOUBLE_EQ(sim::CableForce(c, fmax, L0, 1, 0), fmax);                               // isometric, optimal length
+  EXPECT_DOUBLE_EQ(sim::CableForce(c, fmax, L0, 1, 0), fmax); // isometric, optimal length
   EXPECT_NEAR(sim::CableForce(c, fmax, L0, 1, -0.3 * L0), fmax * (std::exp(-0.09 / 0.45) - 0.015), 1e-12); // λ = 0.7
-  EXPECT_NEAR(sim::CableForce(c, fmax, L0, 0, 0.1 * L0), fmax * 0.005, 1e-12);              // relaxed, stretched 10 %
-  EXPECT_NEAR(sim::CableForce(c, fmax, L0, 1, 0.4 * L0), fmax * 1.02, 1e-12);               // plateau above L0
-  EXPECT_NEAR(sim::CableForce(c, 2 * fmax, L0, 1, 0), 2 * fmax, 1e-12);                     // proportional to Fmax
+  EXPECT_NEAR(sim::CableForce(c, fmax, L0, 0, 0.1 * L0), fmax * 0.005, 1e-12); // relaxed, stretched 10 %
+  EXPECT_NEAR(sim::CableForce(c, fmax, L0, 1, 0.4 * L0), fmax * 1.02, 1e-12);  // plateau above L0
+  EXPECT_NEAR(sim::CableForce(c, 2 * fmax, L0, 1, 0), 2 * fmax, 1e-12);        // proportional to Fmax
   sim::CableModel scaled = c;
   scaled.forceScale = 2;
   EXPECT_NEAR(sim::CableForce(scaled, fmax, L0, 1, -1), 2 * sim::CableForce(c, fmax, L0, 1, -1), 1e-12);
@@ -250,24 +252,23 @@ TEST(Simulation, MissingCalculiXIsReported)
 
 TEST(Simulation, FrdReaderParsesLongAndShortRecords)
 {
-  const std::string text =
-    "    1C\n"
-    "    2C                             2                                     1\n"
-    " -1         1 0.00000E+00 0.00000E+00 0.00000E+00\n"
-    " -3\n"
-    "    1PSTEP                         1           1           1\n"
-    "  100CL  101 5.00000E-01           2                     0    1           1\n"
-    " -4  DISP        4    1\n"
-    " -5  D1          1    2    1    0\n"
-    " -1         1 1.00000E-01-2.50000E-01 3.00000E+00\n"
-    " -1        12-1.00000E-03 0.00000E+00 1.23450E+02\n"
-    " -3\n"
-    "  100CL  102 1.000000000           2                     0    2           0\n"
-    " -4  DISP        4    1\n"
-    " -1    1 2.00000E-01-5.00000E-01 6.00000E+00\n"
-    " -1   12-2.00000E-03 0.00000E+00 2.46900E+02\n"
-    " -3\n"
-    " 9999\n";
+  const std::string text = "    1C\n"
+                           "    2C                             2                                     1\n"
+                           " -1         1 0.00000E+00 0.00000E+00 0.00000E+00\n"
+                           " -3\n"
+                           "    1PSTEP                         1           1           1\n"
+                           "  100CL  101 5.00000E-01           2                     0    1           1\n"
+                           " -4  DISP        4    1\n"
+                           " -5  D1          1    2    1    0\n"
+                           " -1         1 1.00000E-01-2.50000E-01 3.00000E+00\n"
+                           " -1        12-1.00000E-03 0.00000E+00 1.23450E+02\n"
+                           " -3\n"
+                           "  100CL  102 1.000000000           2                     0    2           0\n"
+                           " -4  DISP        4    1\n"
+                           " -1    1 2.00000E-01-5.00000E-01 6.00000E+00\n"
+                           " -1   12-2.00000E-03 0.00000E+00 2.46900E+02\n"
+                           " -3\n"
+                           " 9999\n";
   std::istringstream in(text);
   const auto blocks = sim::ReadFrd(in, "test.frd");
   ASSERT_EQ(blocks.size(), 2u);

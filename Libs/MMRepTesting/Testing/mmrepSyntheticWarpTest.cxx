@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Synthetic warp: inverse consistency, Jacobian bound (against finite differences), and the
 // resampling direction end to end (the synthetic CT's skin mapped back lies on the source skin).
 #include "mmrepRegistrationTestData.h"
@@ -73,7 +75,8 @@ TEST(SyntheticSubjectWarp, ForwardInvertsInverse)
   double maxU = 0;
   for (int i = 0; i < 2000; ++i)
   {
-    const Eigen::Vector3d z(double(rng() % 1400) / 10 - 60, double(rng() % 1200) / 10 - 80, double(rng() % 1600) / 10 - 50);
+    const Eigen::Vector3d z(double(rng() % 1400) / 10 - 60, double(rng() % 1200) / 10 - 80,
+                            double(rng() % 1600) / 10 - 50);
     maxU = std::max(maxU, warp.Displacement(z).norm());
   }
   EXPECT_GT(maxU, 1.0);
@@ -184,8 +187,8 @@ TEST(SyntheticSubjectWarp, SubjectSkinMapsBackOntoSourceSkin)
   const auto [mean, worst] = DistanceToSurface(src.skin, back);
   const auto wrongMean = DistanceToSurface(src.skin, wrong).first;
   const auto unmovedMean = DistanceToSurface(src.skin, unmoved).first;
-  std::cout << "subject skin mapped back by G: mean " << mean << " mm, max " << worst << " mm; by F: mean "
-            << wrongMean << " mm; not mapped: " << unmovedMean << " mm\n";
+  std::cout << "subject skin mapped back by G: mean " << mean << " mm, max " << worst << " mm; by F: mean " << wrongMean
+            << " mm; not mapped: " << unmovedMean << " mm\n";
   EXPECT_LT(mean, 1.0); // about one voxel (1 x 1 x 2 mm)
   EXPECT_GT(wrongMean, 3.0 * mean + 2.0);
   EXPECT_GT(unmovedMean, 2.0 * mean + 1.0);

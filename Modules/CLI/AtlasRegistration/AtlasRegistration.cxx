@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // AtlasRegistration: face atlas FE mesh -> subject (skin, skull, control points), symmetric
 // elastic registration R (Libs/MMRepElasticRegistration).
 #include "mmrepAtlasRegistration.h"
@@ -71,8 +73,9 @@ void Run(mmrep::cli::ModuleContext& ctx)
   mmrep::CheckSubjectMapGrids(subject, mmrep::AtlasRegistrationOptions{}.mapMargin, args.Double("mapSpacing"),
                               "--mapSpacing");
 
-  const mmrep::Plane atlasPlane = args.Given("atlasPlane") ? mmrep::PlaneFromSixNumbers(args.Doubles("atlasPlane"), "--atlasPlane")
-                                                           : mmrep::FitPlaneToNodeSet(atlas, "midsagittal");
+  const mmrep::Plane atlasPlane = args.Given("atlasPlane")
+                                    ? mmrep::PlaneFromSixNumbers(args.Doubles("atlasPlane"), "--atlasPlane")
+                                    : mmrep::FitPlaneToNodeSet(atlas, "midsagittal");
   if (args.Given("subjectPlane"))
     subject.plane = mmrep::PlaneFromSixNumbers(args.Doubles("subjectPlane"), "--subjectPlane");
   else
@@ -95,8 +98,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
   options.progress = [&](double f) { ctx.progress.ReportRange(0.05, 0.9, f); };
   const auto result = mmrep::RegisterAtlas(atlas, atlasPlane, subject, options);
 
-  mmrep::WriteFEMesh(result.mesh, outputs[0]->TempPath(),
-                     mmrep::cli::FileExtension(outputs[0]->FinalPath()).substr(1));
+  mmrep::WriteFEMesh(result.mesh, outputs[0]->TempPath(), mmrep::cli::FileExtension(outputs[0]->FinalPath()).substr(1));
   if (fieldOut)
     mmrep::WriteDisplacementField(result.transform.ToDisplacementField(grid.Image()), fieldOut->TempPath());
   if (reportOut)
@@ -109,8 +111,8 @@ void Run(mmrep::cli::ModuleContext& ctx)
     o->Commit();
 
   const auto& r = result.report.Last();
-  std::cout << "Skin error " << r.skin.mean << " mm mean, " << r.skin.max << " mm max; skull " << r.skull.mean
-            << " / " << r.skull.max << " mm; control points " << r.controlMean << " / " << r.controlMax << " mm; "
+  std::cout << "Skin error " << r.skin.mean << " mm mean, " << r.skin.max << " mm max; skull " << r.skull.mean << " / "
+            << r.skull.max << " mm; control points " << r.controlMean << " / " << r.controlMax << " mm; "
             << result.transform.StepCount() << " steps" << std::endl;
   ctx.outputs.Set("skinMeanError", r.skin.mean);
   ctx.outputs.Set("skinMaxError", r.skin.max);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // BuildFaceAtlas: reference head CT -> generic face atlas (mesh, landmarks, QC pictures).
 #include "mmrepCLI.h"
 #include "mmrepFEMeshIO.h"
@@ -97,8 +99,8 @@ void Run(mmrep::cli::ModuleContext& ctx)
   std::cout << "Surfaces " << tSurfaces << " s, plane " << tPlane - tSurfaces << " s" << std::endl;
   std::cout << std::setprecision(6) << "Thresholds (" << surfaces.thresholds.source << "): skin "
             << surfaces.thresholds.skin << ", bone " << surfaces.thresholds.bone << "\nSymmetry plane: point "
-            << symmetry.plane.point.transpose() << ", normal " << symmetry.plane.normal.transpose()
-            << ", RMS residual " << symmetry.rmsResidual << " mm\n";
+            << symmetry.plane.point.transpose() << ", normal " << symmetry.plane.normal.transpose() << ", RMS residual "
+            << symmetry.rmsResidual << " mm\n";
   ctx.progress.Report(0.5);
 
   // 2-8. The atlas, and its quality measured independently of the construction's own checks.
@@ -114,7 +116,8 @@ void Run(mmrep::cli::ModuleContext& ctx)
 
   mmrep::WriteFEMesh(mesh, meshOut->TempPath(), meshFormat.substr(1));
   if (landmarksOut)
-    mmrep::WriteLandmarks(mesh.landmarks, landmarksOut->TempPath(), landmarksFormat.substr(1), mmrep::CoordinateSystem::LPS);
+    mmrep::WriteLandmarks(mesh.landmarks, landmarksOut->TempPath(), landmarksFormat.substr(1),
+                          mmrep::CoordinateSystem::LPS);
   if (skinOut)
     mmrep::WriteSurface(atlas.skinSurface, skinOut->TempPath(), mmrep::cli::FileExtension(skinOut->FinalPath()));
   if (skullOut)
@@ -126,7 +129,8 @@ void Run(mmrep::cli::ModuleContext& ctx)
     o->Commit();
 
   std::cout << mmrep::FaceAtlasCounts(mesh) << "\nTimings: surfaces " << tSurfaces << " s, symmetry plane "
-            << tPlane - tSurfaces << " s, atlas " << tAtlas - tPlane << " s, total " << Seconds(start) << " s" << std::endl;
+            << tPlane - tSurfaces << " s, atlas " << tAtlas - tPlane << " s, total " << Seconds(start) << " s"
+            << std::endl;
   ctx.outputs.Set("nodeCount", static_cast<long long>(mesh.nodes.size()));
   ctx.outputs.Set("elementCount", static_cast<long long>(mesh.SolidElementCount()));
   ctx.outputs.Set("cableCount", static_cast<long long>(mesh.elements.size() - mesh.SolidElementCount()));

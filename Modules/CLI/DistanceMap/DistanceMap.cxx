@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // DistanceMap: surface or label volume -> Euclidean distance map (float, mm) on an LPS grid.
 #include "mmrepCLI.h"
 #include "mmrepImageIO.h"
@@ -33,7 +35,8 @@ vtkSmartPointer<vtkPolyData> LabelBoundary(const std::string& path, long long la
     inside += p[i];
   }
   if (inside == 0)
-    throw mmrep::cli::ModuleError(path + ": no voxel with label " + (label == 0 ? std::string("!= 0") : std::to_string(label)));
+    throw mmrep::cli::ModuleError(path + ": no voxel with label " +
+                                  (label == 0 ? std::string("!= 0") : std::to_string(label)));
   mmrep::SurfaceExtractionOptions o;
   o.largestPieceOnly = false;
   return mmrep::ExtractSurface(labels, 0.5, o);

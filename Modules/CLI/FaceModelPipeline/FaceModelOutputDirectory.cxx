@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "FaceModelOutputDirectory.h"
 
 #include "mmrepCLI.h"
@@ -12,7 +14,7 @@ FaceModelOutputDirectory::FaceModelOutputDirectory(const std::string& path)
 {
   final_ = fs::path(path).lexically_normal();
   if (final_.filename().empty())
-    final_ = final_.parent_path(); // "out/" -> "out"
+    final_ = final_.parent_path();                    // "out/" -> "out"
   mmrep::cli::CheckOutputPath(final_.string(), true); // never over or around an input
   std::error_code ec;
   if (fs::exists(final_, ec) && !fs::is_directory(final_, ec))
@@ -44,11 +46,11 @@ void FaceModelOutputDirectory::Commit()
   // Inside a module run the folder appears only once every step succeeded (return parameters too).
   const fs::path final = final_, staging = staging_;
   committed_ = mmrep::cli::DeferPublication(
-      final_.string(), [final, staging] { Publish(final, staging); },
-      [staging] {
-        std::error_code ec;
-        fs::remove_all(staging, ec);
-      });
+    final_.string(), [final, staging] { Publish(final, staging); },
+    [staging] {
+      std::error_code ec;
+      fs::remove_all(staging, ec);
+    });
   if (!committed_)
   {
     Publish(final_, staging_);

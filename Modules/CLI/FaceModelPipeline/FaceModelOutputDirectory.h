@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // An output directory that appears only when complete: files are written into a staging
 // directory beside it, which replaces the final one on Commit(); without Commit (an error) the
 // staging directory is removed, so no partial result is ever presented.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // FaceModelPipeline: speaker CT + five control points -> FE face model with muscles, exports for
 // VTK, CalculiX/Abaqus, FEBio and Gmsh, the transform, a report and QC pictures, in one directory
 // that appears only when complete (Libs/MMRepPipeline).
@@ -39,7 +41,8 @@ void Run(mmrep::cli::ModuleContext& ctx)
   FaceModelOutputDirectory out(args.String("outputDirectory"));
 
   ctx.progress.Start("Face model pipeline");
-  const std::string atlasPath = args.Given("atlas") ? args.String("atlas") : mmrep::cli::ModuleResourcePath(MMREP_DEFAULT_ATLAS);
+  const std::string atlasPath =
+    args.Given("atlas") ? args.String("atlas") : mmrep::cli::ModuleResourcePath(MMREP_DEFAULT_ATLAS);
   const auto atlas = mmrep::ReadFEMesh(atlasPath);
   const auto controlPoints = mmrep::ReadLandmarks(args.String("controlPoints"));
   const auto ct = mmrep::ReadCTImage(args.String("inputVolume"));
@@ -80,8 +83,8 @@ void Run(mmrep::cli::ModuleContext& ctx)
 
   std::cout << "Scaled Jacobian after Q∘R: min " << result.qualityAfterQ.min << ", " << result.qualityAfterQ.inverted
             << " inverted, " << result.qualityAfterQ.belowThreshold << " below " << qualityThreshold
-            << "; repaired: min " << result.repair.minScaledJacobianAfter << " in " << result.repair.seconds
-            << " s" << std::endl;
+            << "; repaired: min " << result.repair.minScaledJacobianAfter << " in " << result.repair.seconds << " s"
+            << std::endl;
   mmrep::FaceModelOutputOptions output;
   output.pictures = pictures;
   output.halfModel = args.Bool("halfModel");

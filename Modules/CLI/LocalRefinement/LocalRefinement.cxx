@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // LocalRefinement: finer elastic deformation Q over a node set's box (lips), boundary fixed.
 #include "mmrepAtlasRegistration.h"
 #include "mmrepCLI.h"
@@ -17,7 +19,7 @@ namespace
 {
 using mmrep::cli::ModuleError;
 
-nlohmann::json Stats(const mmrep::SurfaceErrorStatistics& s)
+nlohmann::json Stats(const mmrep::SurfaceDistance& s)
 {
   return {{"count", s.count}, {"mean", s.mean}, {"max", s.max}, {"sigma", s.sigma}};
 }
@@ -27,7 +29,8 @@ void Run(mmrep::cli::ModuleContext& ctx)
   const auto& args = ctx.args;
   const auto ext = mmrep::cli::FileExtension(args.String("outputMesh"));
   if (ext != ".vtu" && ext != ".vtk" && ext != ".inp" && ext != ".feb" && ext != ".msh")
-    throw ModuleError(args.String("outputMesh") + ": unknown mesh format '" + ext + "' (use .vtu, .vtk, .inp, .feb or .msh)");
+    throw ModuleError(args.String("outputMesh") + ": unknown mesh format '" + ext +
+                      "' (use .vtu, .vtk, .inp, .feb or .msh)");
   mmrep::cli::AtomicOutput meshOut(args.String("outputMesh"));
   std::unique_ptr<mmrep::cli::AtomicOutput> reportOut;
   bool markdown = false;
@@ -65,8 +68,9 @@ void Run(mmrep::cli::ModuleContext& ctx)
                               {"seconds", result.after.seconds},
                               {"stepsPerLevel", result.after.stepsPerLevel},
                               {"sweepsPerLevel", result.after.sweepsPerLevel}};
-    reportOut->WriteText(markdown ? result.Report().ToMarkdown("Local refinement (Q) of node set '" + options.regionSet + "'")
-                                  : j.dump(2) + "\n");
+    reportOut->WriteText(markdown
+                           ? result.Report().ToMarkdown("Local refinement (Q) of node set '" + options.regionSet + "'")
+                           : j.dump(2) + "\n");
   }
   meshOut.Commit();
   if (reportOut)

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // MeshConvert: FE face model from .vtu/.vtk to .vtu, .vtk, .inp, .feb or .msh (by extension).
 #include "mmrepCLI.h"
 #include "mmrepFEMeshIO.h"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // MeshQuality: Verdict element quality of an FE face model, as cell arrays and a summary.
 #include "mmrepCLI.h"
 #include "mmrepFEMeshIO.h"
@@ -38,13 +40,13 @@ void PrintTable(const std::vector<Measure>& measures, const std::vector<std::vec
   }
 }
 
-void WriteMesh(const FEMesh& mesh, const std::vector<Measure>& measures,
-               const std::vector<std::vector<double>>& values, const std::string& path)
+void WriteMesh(const FEMesh& mesh, const std::vector<Measure>& measures, const std::vector<std::vector<double>>& values,
+               const std::string& path)
 {
   vtkSmartPointer<vtkUnstructuredGrid> grid = ToVTK(mesh);
   if (grid->GetNumberOfCells() != static_cast<vtkIdType>(mesh.elements.size()))
-    throw cli::ModuleError("internal: the VTK grid has " + std::to_string(grid->GetNumberOfCells()) +
-                           " cells for " + std::to_string(mesh.elements.size()) + " elements");
+    throw cli::ModuleError("internal: the VTK grid has " + std::to_string(grid->GetNumberOfCells()) + " cells for " +
+                           std::to_string(mesh.elements.size()) + " elements");
   for (std::size_t m = 0; m < measures.size(); ++m)
   {
     vtkNew<vtkDoubleArray> array;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // MeshReparation: Jacobian-based repair of an FE face model after registration, with a JSON report
 // and before/after scaled-Jacobian histograms. The repaired mesh is written only on success.
 #include "mmrepCLI.h"
@@ -114,7 +116,8 @@ MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
     ctx.progress.Report(0.9);
 
     if (!report.success)
-      throw cli::ModuleError(RepairFailureMessage(report, options.scaledJacobianThreshold) + "; no output mesh written");
+      throw cli::ModuleError(RepairFailureMessage(report, options.scaledJacobianThreshold) +
+                             "; no output mesh written");
     {
       cli::AtomicOutput out(output);
       try

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // MuscleInference: atlas muscle tracks -> speaker model through an atlas-to-speaker displacement
 // field (Libs/MMRepPipeline/mmrepMuscleInference.h).
 #include "mmrepCLI.h"

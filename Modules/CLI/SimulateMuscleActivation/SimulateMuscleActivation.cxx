@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // SimulateMuscleActivation: muscle activation of a speaker FE face model with CalculiX; deformed
 // model (.vtu with the displacement), before/after pictures, landmark displacements and mouth measures.
 #include "mmrepActivationPictures.h"
@@ -45,22 +47,6 @@ sim::ActivationRequest Request(const cli::Arguments& args)
   return r;
 }
 
-// Runs f, turning library errors into one-line module errors.
-template <typename F> auto AsModuleError(F&& f, const std::string& prefix = "")
-{
-  try
-  {
-    return f();
-  }
-  catch (const cli::ModuleError&)
-  {
-    throw;
-  }
-  catch (const std::exception& e)
-  {
-    throw cli::ModuleError(prefix + e.what());
-  }
-}
 } // namespace
 
 MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
@@ -76,12 +62,13 @@ MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
         throw cli::ModuleError("picture '" + png + "' must end in .png");
 
     ctx.progress.Start("Simulating muscle activation with CalculiX");
-    const FEMesh mesh = AsModuleError([&] { return ReadFEMesh(input); });
+    const FEMesh mesh = cli::AsModuleError([&] { return ReadFEMesh(input); });
     if (mesh.muscles.empty())
-      throw cli::ModuleError("input model '" + input + "' has no muscles: a speaker model with muscle tracks is needed");
+      throw cli::ModuleError("input model '" + input +
+                             "' has no muscles: a speaker model with muscle tracks is needed");
     sim::Gesture gesture;
     sim::ActivationOptions options;
-    AsModuleError([&] {
+    cli::AsModuleError([&] {
       options.deck = sim::MakeDeckOptions(mesh, Request(ctx.args), input, gesture);
       options.run.executable = ctx.args.Has("ccx") ? ctx.args.String("ccx") : "";
       sim::FindCalculiX(options.run.executable);
@@ -96,17 +83,21 @@ MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
     ctx.progress.Report(0.1);
 
     const sim::ActivationResult result =
-      AsModuleError([&] { return sim::SimulateMuscleActivation(mesh, options); }, "input model '" + input + "': ");
+      cli::AsModuleError([&] { return sim::SimulateMuscleActivation(mesh, options); }, "input model '" + input + "': ");
     if (options.run.keepDirectory)
       std::printf("CalculiX job folder kept: %s\n", result.run.directory.c_str());
     ctx.progress.Report(0.8);
     const double maxDisplacement = sim::MaxSolidDisplacement(mesh, result);
     const sim::MouthMeasures mouth = sim::MeasureMouth(mesh, result);
-    std::printf("%s", sim::ActivationReport(result, options.run.threads, options.deck.jawAngle, mouth, maxDisplacement).c_str());
+    std::printf(
+      "%s", sim::ActivationReport(result, options.run.threads, options.deck.jawAngle, mouth, maxDisplacement).c_str());
     std::fflush(stdout);
 
     cli::AtomicOutput model(output);
-    AsModuleError([&] { sim::WriteDeformedModel(mesh, result, model.TempPath()); return 0; });
+    cli::AsModuleError([&] {
+      sim::WriteDeformedModel(mesh, result, model.TempPath());
+      return 0;
+    });
     model.Commit();
     ctx.progress.Report(0.85);
     std::optional<cli::AtomicOutput> front, lips;
@@ -117,7 +108,7 @@ MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
     if (front || lips)
     {
       const std::string title = gesture.name.empty() ? sim::ShortList(result.deck.activeMuscles) : gesture.name;
-      AsModuleError([&] {
+      cli::AsModuleError([&] {
         sim::WriteActivationPictures(mesh, result, maxDisplacement, front ? front->TempPath() : "",
                                      lips ? lips->TempPath() : "", title);
         return 0;
@@ -127,9 +118,10 @@ MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
           (*png)->Commit();
     }
 
-    for (const auto& [param, name] : std::vector<std::pair<std::string, std::string>>{
-           {"leftLipCornerDisplacement", "LeftLipCorner"}, {"upperLipCenterDisplacement", "UpperLipCenter"},
-           {"lowerLipCenterDisplacement", "LowerLipCenter"}})
+    for (const auto& [param, name] :
+         std::vector<std::pair<std::string, std::string>>{{"leftLipCornerDisplacement", "LeftLipCorner"},
+                                                          {"upperLipCenterDisplacement", "UpperLipCenter"},
+                                                          {"lowerLipCenterDisplacement", "LowerLipCenter"}})
       for (const auto& m : result.landmarks)
         if (m.name == name)
           ctx.outputs.Set(param, std::vector<double>{m.displacement.x(), m.displacement.y(), m.displacement.z()});

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // SkinSkullSurfaces: head CT -> outer skin surface and skull surface (LPS mm).
 #include "mmrepCLI.h"
 #include "mmrepCTThresholds.h"
@@ -48,9 +50,9 @@ void Run(mmrep::cli::ModuleContext& ctx)
   const auto ct = mmrep::ReadCTImage(args.String("inputVolume"));
   ctx.progress.Report(0.1);
 
-  const auto thresholds = mmrep::ChooseThresholds(ct, mmrep::ThresholdModeFromName(args.String("thresholdMode")),
-                                                  OptionalDouble(args, "skinThreshold"),
-                                                  OptionalDouble(args, "boneThreshold"));
+  const auto thresholds =
+    mmrep::ChooseThresholds(ct, mmrep::ThresholdModeFromName(args.String("thresholdMode")),
+                            OptionalDouble(args, "skinThreshold"), OptionalDouble(args, "boneThreshold"));
   std::cout << "Thresholds (" << thresholds.source << "): skin " << thresholds.skin << ", bone " << thresholds.bone
             << std::endl;
 
@@ -94,8 +96,8 @@ void Run(mmrep::cli::ModuleContext& ctx)
   for (auto& o : outputs)
     o->Commit();
 
-  std::cout << "Skin: " << skin->GetNumberOfPoints() << " vertices, " << skin->GetNumberOfPolys()
-            << " triangles; head " << head.skinVolume / 1000 << " ml\n"
+  std::cout << "Skin: " << skin->GetNumberOfPoints() << " vertices, " << skin->GetNumberOfPolys() << " triangles; head "
+            << head.skinVolume / 1000 << " ml\n"
             << "Skull: " << skull->GetNumberOfPoints() << " vertices, " << skull->GetNumberOfPolys()
             << " triangles; bone " << head.boneVolume / 1000 << " ml" << std::endl;
   ctx.outputs.Set("chosenSkinThreshold", thresholds.skin);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // SymmetryPlane: skin surface -> mid-sagittal plane (point, normal) and an optional Slicer plane markup.
 #include "mmrepCLI.h"
 #include "mmrepSurfaceIO.h"
@@ -59,9 +61,8 @@ void WritePlaneMarkup(const mmrep::Plane& plane, const std::string& path)
   markup["objectToBase"] = objectToBase;
   markup["controlPoints"] = nlohmann::ordered_json::array({point});
   nlohmann::ordered_json doc;
-  doc["@schema"] =
-    "https://raw.githubusercontent.com/slicer/slicer/master/Modules/Loadable/Markups/Resources/Schema/"
-    "markups-schema-v1.0.3.json#";
+  doc["@schema"] = "https://raw.githubusercontent.com/slicer/slicer/master/Modules/Loadable/Markups/Resources/Schema/"
+                   "markups-schema-v1.0.3.json#";
   doc["markups"] = nlohmann::ordered_json::array({markup});
   std::ofstream f(path);
   f << std::setprecision(17) << doc.dump(2) << "\n";

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // SyntheticSubject: source CT -> synthetic subject CT with a known transform (see mmrepSyntheticWarp.h).
 #include "mmrepCLI.h"
 #include "mmrepImageIO.h"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // AtlasRegistration as a user runs it: synthetic atlas and subject files, planes given or
 // estimated, outputs checked against the known truth; bad input gives one line and no output.
 #include "mmrepImageIO.h"
@@ -59,10 +61,10 @@ TEST(ElasticAtlasRegistrationModule, RegistersTheSyntheticSubjectAndWritesEveryt
   ScratchDirectory dir("atlasreg");
   const auto in = WriteInputs(dir);
   // Atlas plane from the 'midsagittal' node set (not given), subject plane given.
-  const auto run = RunModuleExecutable(
-    "AtlasRegistration", {in.atlas, in.skin, in.skull, in.points, dir / "out.vtu", "--subjectPlane", in.plane,
-                          "--outputTransform", dir / "field.nrrd", "--transformSpacing", "4", "--report",
-                          dir / "report.json", "--returnparameterfile", dir / "values.txt"});
+  const auto run = RunModuleExecutable("AtlasRegistration",
+                                       {in.atlas, in.skin, in.skull, in.points, dir / "out.vtu", "--subjectPlane",
+                                        in.plane, "--outputTransform", dir / "field.nrrd", "--transformSpacing", "4",
+                                        "--report", dir / "report.json", "--returnparameterfile", dir / "values.txt"});
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const auto values = ReadReturnParameters(dir / "values.txt");
   EXPECT_LT(std::stod(values.at("skinMeanError")), 0.3);
@@ -113,10 +115,9 @@ TEST(ElasticAtlasRegistrationModule, WritesAMarkdownReportForMdExtension)
 {
   ScratchDirectory dir("atlasmd");
   const auto in = WriteInputs(dir);
-  const auto run = RunModuleExecutable("AtlasRegistration",
-                                       {in.atlas, in.skin, in.skull, in.points, dir / "out.vtu", "--subjectPlane", in.plane,
-                                        "--levels", "2", "--report", dir / "report.md", "--returnparameterfile",
-                                        dir / "v.txt"});
+  const auto run = RunModuleExecutable(
+    "AtlasRegistration", {in.atlas, in.skin, in.skull, in.points, dir / "out.vtu", "--subjectPlane", in.plane,
+                          "--levels", "2", "--report", dir / "report.md", "--returnparameterfile", dir / "v.txt"});
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const auto md = mmrep::testing::Slurp(dir / "report.md");
   const auto values = ReadReturnParameters(dir / "v.txt");
@@ -171,7 +172,7 @@ TEST(ElasticAtlasRegistrationModule, BadInputGivesOneLineAndNoOutput)
   }
   ExpectCleanFailure(runWith(dir / "far-skin.vtp", dir / "far-skull.vtp", in.points), dir, "do not overlap");
   // A plane with four numbers.
-  auto run = RunModuleExecutable("AtlasRegistration",
-                                 {in.atlas, in.skin, in.skull, in.points, dir / "out.vtu", "--subjectPlane", "0,0,0,1"});
+  auto run = RunModuleExecutable(
+    "AtlasRegistration", {in.atlas, in.skin, in.skull, in.points, dir / "out.vtu", "--subjectPlane", "0,0,0,1"});
   ExpectCleanFailure(run, dir, "subjectPlane");
 }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Tests of the shipped face atlas (Resources/Atlas) and of its reproducible build from the CT.
 // The rebuild test checks the module reproduces the shipped files bit for bit; the other tests
 // check the shipped atlas's properties against independent references (VTK).
@@ -96,11 +98,19 @@ vtkSmartPointer<vtkStaticCellLocator> Locator(vtkDataSet* data)
   return l;
 }
 
-const std::vector<std::string> kMuscles{
-  "OrbicularisOrisPeripheralisUpper", "OrbicularisOrisPeripheralisLower", "OrbicularisOrisMarginalisUpper",
-  "OrbicularisOrisMarginalisLower", "ZygomaticusMajor", "Risorius", "LevatorLabiiSuperioris",
-  "LevatorLabiiSuperiorisAlaequeNasi", "LevatorAnguliOris", "DepressorAnguliOris", "DepressorLabiiInferioris",
-  "Mentalis", "Buccinator"};
+const std::vector<std::string> kMuscles{"OrbicularisOrisPeripheralisUpper",
+                                        "OrbicularisOrisPeripheralisLower",
+                                        "OrbicularisOrisMarginalisUpper",
+                                        "OrbicularisOrisMarginalisLower",
+                                        "ZygomaticusMajor",
+                                        "Risorius",
+                                        "LevatorLabiiSuperioris",
+                                        "LevatorLabiiSuperiorisAlaequeNasi",
+                                        "LevatorAnguliOris",
+                                        "DepressorAnguliOris",
+                                        "DepressorLabiiInferioris",
+                                        "Mentalis",
+                                        "Buccinator"};
 } // namespace
 
 // The documented command rebuilds the shipped atlas exactly (deterministic construction).
@@ -137,7 +147,8 @@ TEST(AtlasModule, RebuildMatchesShipped)
   for (std::size_t k = 0; k < shipped.landmarks.size(); ++k)
     EXPECT_EQ(rebuilt.landmarks[k].position, shipped.landmarks[k].position) << shipped.landmarks[k].name;
   // The other shipped files are the same bytes.
-  for (const std::string f : {"FaceAtlas.vtu", "FaceAtlasLandmarks.mrk.json", "FaceAtlasSkin.vtp", "FaceAtlasSkull.vtp"})
+  for (const std::string f :
+       {"FaceAtlas.vtu", "FaceAtlasLandmarks.mrk.json", "FaceAtlasSkin.vtp", "FaceAtlasSkull.vtp"})
     EXPECT_TRUE(mmrep::testing::Slurp(dir / f) == mmrep::testing::Slurp(kAtlasDir + "/" + f)) << f << " differs";
   // Return values agree with the mesh.
   const auto ret = mmrep::testing::ReadReturnParameters(dir / "ret.txt");
@@ -237,7 +248,8 @@ TEST(AtlasShipped, MirrorSymmetric)
     ASSERT_EQ(o.nodes.size(), track.nodes.size()) << name;
     // Positions (muscles meeting at the modiolus have coincident points, so indices may differ).
     for (std::size_t k = 0; k < track.nodes.size(); ++k)
-      EXPECT_LT((plane.Mirror(mesh.nodes[track.nodes[k]]) - mesh.nodes[o.nodes[k]]).norm(), 1e-6) << name << " point " << k;
+      EXPECT_LT((plane.Mirror(mesh.nodes[track.nodes[k]]) - mesh.nodes[o.nodes[k]]).norm(), 1e-6)
+        << name << " point " << k;
   }
   // Mirrored elements: each hexahedron's mirrored node set is a hexahedron of the mesh.
   std::set<std::vector<std::int32_t>> hexes;
@@ -289,8 +301,8 @@ TEST(AtlasShipped, SkinAndSkullNodesOnReferenceSurfaces)
       worstSkull = std::max(worstSkull, d);
     }
   }
-  std::cout << "skin worst " << worstSkin << " mm, skull worst off the plane " << worstSkull
-            << " mm, on the plane " << worstSkullOnPlane << " mm (" << farOnPlane << " nodes >= 0.1 mm)\n";
+  std::cout << "skin worst " << worstSkin << " mm, skull worst off the plane " << worstSkull << " mm, on the plane "
+            << worstSkullOnPlane << " mm (" << farOnPlane << " nodes >= 0.1 mm)\n";
   EXPECT_LT(worstSkin, 0.1);
   EXPECT_LT(worstSkull, 0.1);
   EXPECT_LT(worstSkullOnPlane, 0.1);
@@ -375,13 +387,13 @@ TEST(AtlasShipped, LandmarksOnTheSkin)
   const auto& P = [&](std::size_t k) { return mesh.landmarks[k].position; };
   EXPECT_NEAR(lateral(3), 0, 1e-6); // lip centres on the plane
   EXPECT_NEAR(lateral(4), 0, 1e-6);
-  EXPECT_GT(P(3).z(), P(4).z());                 // upper lip above lower lip (LPS z superior)
-  EXPECT_GT(lateral(0), 5);                      // eye corners on the left
-  EXPECT_GT(lateral(1), lateral(0) + 15);        // outer corner lateral of the inner one (eye width)
+  EXPECT_GT(P(3).z(), P(4).z());          // upper lip above lower lip (LPS z superior)
+  EXPECT_GT(lateral(0), 5);               // eye corners on the left
+  EXPECT_GT(lateral(1), lateral(0) + 15); // outer corner lateral of the inner one (eye width)
   EXPECT_LT(lateral(1), lateral(0) + 45);
-  EXPECT_GT(lateral(2), 15);                     // mouth half-width
+  EXPECT_GT(lateral(2), 15); // mouth half-width
   EXPECT_LT(lateral(2), 35);
-  EXPECT_GT(P(0).z(), P(3).z() + 30);            // eyes well above the mouth
+  EXPECT_GT(P(0).z(), P(3).z() + 30);                      // eyes well above the mouth
   EXPECT_NEAR(P(2).z(), 0.5 * (P(3).z() + P(4).z()), 8.0); // mouth corner near the lip line
 }
 
@@ -399,8 +411,8 @@ TEST(AtlasShipped, LipsSet)
   {
     std::int32_t best = -1;
     for (auto n : skin)
-      if (best < 0 || (mesh.nodes[n] - mesh.landmarks[k].position).norm() <
-                        (mesh.nodes[best] - mesh.landmarks[k].position).norm())
+      if (best < 0 ||
+          (mesh.nodes[n] - mesh.landmarks[k].position).norm() < (mesh.nodes[best] - mesh.landmarks[k].position).norm())
         best = n;
     EXPECT_TRUE(std::binary_search(lips.begin(), lips.end(), best)) << mesh.landmarks[k].name;
   }

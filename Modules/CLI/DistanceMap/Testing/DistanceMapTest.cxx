@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // DistanceMap as a user runs it: from a surface file and from a label volume.
 #include "mmrepImageIO.h"
 #include "mmrepModuleRunner.h"
@@ -79,8 +81,8 @@ TEST(DistanceMapModule, LabelVolumeBoundary)
         labels->SetPixel({{i, j, k}}, 3);
   labels->SetPixel({{2, 2, 2}}, 5); // another label, ignored with --labelValue 3
   mmrep::WriteImage(labels.GetPointer(), dir / "labels.nrrd");
-  const auto run = RunModuleExecutable("DistanceMap", {dir / "labels.nrrd", dir / "map.mha", "--labelValue", "3",
-                                                       "--spacing", "0.5", "--margin", "4"});
+  const auto run = RunModuleExecutable(
+    "DistanceMap", {dir / "labels.nrrd", dir / "map.mha", "--labelValue", "3", "--spacing", "0.5", "--margin", "4"});
   ASSERT_EQ(run.exitCode, 0) << run.err;
   auto map = mmrep::ReadFloatImage(dir / "map.mha");
   // The iso-surface at 0.5 of the cube indicator is the box [9.5, 29.5]^3 (voxel units = mm here).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Issue 14: speech gestures on the DEFAULT speaker model of the bundled CT (FaceModelPipeline, then
 // SimulateMuscleActivation --gesture): the directions and sizes of the lip and jaw motions, the lips
 // never interpenetrating (independent measure: the lower lip's facing nodes against the upper lip's
@@ -28,7 +30,7 @@ const std::string kPoints = std::string(MMREP_SOURCE_DIR) + "/Resources/SampleDa
 // README.md). Issue 14's targets (5, 2 and 5 mm) are NOT reached with these forces: see there.
 constexpr double kSmileLateral = 0.45, kSmileUp = 1.45; // left mouth corner (target 5, up and lateral)
 constexpr double kRoundUpperProtrusion = 0.08, kRoundLowerProtrusion = 0.29; // lips forward (target 2)
-constexpr double kRoundNarrowing = 2.3;                 // mouth width (target 5)
+constexpr double kRoundNarrowing = 2.3;                                      // mouth width (target 5)
 // Rounding presses the lips together: the gap pairs hold them within 0.55 mm (measured) of each
 // other, short of the issue's 0.1 mm.
 constexpr double kRoundGap = -0.7;
@@ -53,8 +55,9 @@ GestureRun Simulate(const ScratchDirectory& dir, const std::string& model, const
 {
   GestureRun g;
   const std::string vtu = dir / (gesture + ".vtu"), ret = dir / (gesture + ".txt"), png = dir / (gesture + ".png");
-  const ModuleRun run = RunModuleExecutable(
-    "SimulateMuscleActivation", {model, vtu, "--gesture", gesture, "--picture", png, "--returnparameterfile", ret}, true);
+  const ModuleRun run =
+    RunModuleExecutable("SimulateMuscleActivation",
+                        {model, vtu, "--gesture", gesture, "--picture", png, "--returnparameterfile", ret}, true);
   EXPECT_EQ(run.exitCode, 0) << run.err;
   g.out = run.out;
   std::printf("%s", run.out.c_str());
@@ -74,7 +77,10 @@ double MinimumLipGap(const GestureRun& g)
   return MeasureLipGap(g.rest, u).minimum;
 }
 
-double Value(const GestureRun& g, const std::string& name) { return std::stod(g.values.at(name)); }
+double Value(const GestureRun& g, const std::string& name)
+{
+  return std::stod(g.values.at(name));
+}
 
 } // namespace
 
@@ -96,8 +102,9 @@ TEST(SpeechGestures, DefaultModelHasSeparableLipsAndAJaw)
     for (auto n : model.nodeSets.at(set))
       EXPECT_TRUE(std::binary_search(skull.begin(), skull.end(), n)) << set;
   const auto& axis = model.nodeSets.at(kJawAxisSet);
-  const Point3 left = model.nodes[static_cast<std::size_t>(axis[0])], right = model.nodes[static_cast<std::size_t>(axis[1])];
-  EXPECT_GT(left.x() - right.x(), 80.0);  // bicondylar breadth ~ 100 mm (LPS: +x is the patient's left)
+  const Point3 left = model.nodes[static_cast<std::size_t>(axis[0])],
+               right = model.nodes[static_cast<std::size_t>(axis[1])];
+  EXPECT_GT(left.x() - right.x(), 80.0); // bicondylar breadth ~ 100 mm (LPS: +x is the patient's left)
   EXPECT_LT(left.x() - right.x(), 120.0);
 }
 
@@ -138,7 +145,8 @@ TEST(SpeechGestures, JawOpeningPartsTheLips)
   // Every mandible node moved rigidly: by the rotation of the condylar axis (independent of ccx).
   const Eigen::Isometry3d jaw = JawRotation(g.rest, 10.0);
   for (auto n : g.rest.nodeSets.at(kMandibleSet))
-    EXPECT_LT((g.deformed.nodes[static_cast<std::size_t>(n)] - jaw * g.rest.nodes[static_cast<std::size_t>(n)]).norm(), 1e-3);
+    EXPECT_LT((g.deformed.nodes[static_cast<std::size_t>(n)] - jaw * g.rest.nodes[static_cast<std::size_t>(n)]).norm(),
+              1e-3);
 }
 
 TEST(SpeechGestures, BadGestureInputFailsCleanly)

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // The half-face model of the speaker model of the bundled CT (FaceModelPipeline --halfModel): the
 // cut against the full model, and issue 14's half-face simulation: the symmetric smile (both
 // zygomatici majores) on the full model against the left one on the half, landmark by landmark.
@@ -95,14 +97,17 @@ TEST(FaceModelPipelineModule, HalfModelOfTheSpeakerSimulatesTheSymmetricSmileLik
   // The symmetric smile.
   const std::string fullOut = dir / "full-smile.vtu", halfOut = dir / "half-smile.vtu";
   const std::string fullRet = dir / "full.txt", halfRet = dir / "half.txt";
-  const ModuleRun f = RunModuleExecutable("SimulateMuscleActivation",
-                                          {(out / "model.vtu").string(), fullOut, "--muscles",
-                                           "ZygomaticusMajor_L,ZygomaticusMajor_R", "--elementType", "C3D8", "--returnparameterfile", fullRet},
-                                          true);
+  const ModuleRun f =
+    RunModuleExecutable("SimulateMuscleActivation",
+                        {(out / "model.vtu").string(), fullOut, "--muscles", "ZygomaticusMajor_L,ZygomaticusMajor_R",
+                         "--elementType", "C3D8", "--returnparameterfile", fullRet},
+                        true);
   ASSERT_EQ(f.exitCode, 0) << f.err;
-  const ModuleRun h = RunModuleExecutable(
-    "SimulateMuscleActivation",
-    {(out / "half-model.vtu").string(), halfOut, "--muscles", "ZygomaticusMajor_L", "--elementType", "C3D8", "--returnparameterfile", halfRet}, true);
+  const ModuleRun h =
+    RunModuleExecutable("SimulateMuscleActivation",
+                        {(out / "half-model.vtu").string(), halfOut, "--muscles", "ZygomaticusMajor_L", "--elementType",
+                         "C3D8", "--returnparameterfile", halfRet},
+                        true);
   ASSERT_EQ(h.exitCode, 0) << h.err;
   EXPECT_NE(h.out.find("symmetry-plane nodes"), std::string::npos);
   const auto fv = ReadReturnParameters(fullRet), hv = ReadReturnParameters(halfRet);
@@ -119,8 +124,9 @@ TEST(FaceModelPipelineModule, HalfModelOfTheSpeakerSimulatesTheSymmetricSmileLik
     ASSERT_EQ(fullMotion.count(name), 1u) << name;
     const Point3& uf = fullMotion.at(name);
     const double diff = (uh - uf).norm();
-    std::printf("  %-20s full (%7.3f %7.3f %7.3f)  half (%7.3f %7.3f %7.3f)  difference %.4f mm = %.2f %%\n", name.c_str(),
-                uf.x(), uf.y(), uf.z(), uh.x(), uh.y(), uh.z(), diff, 100 * diff / std::max(uf.norm(), 1e-12));
+    std::printf("  %-20s full (%7.3f %7.3f %7.3f)  half (%7.3f %7.3f %7.3f)  difference %.4f mm = %.2f %%\n",
+                name.c_str(), uf.x(), uf.y(), uf.z(), uh.x(), uh.y(), uh.z(), diff,
+                100 * diff / std::max(uf.norm(), 1e-12));
     // 5 % of the landmark's motion (of a tenth of the largest for landmarks that barely move).
     EXPECT_LE(diff, 0.05 * std::max(uf.norm(), 0.1 * largest)) << name;
   }
@@ -131,8 +137,8 @@ TEST(FaceModelPipelineModule, HalfModelOfTheSpeakerSimulatesTheSymmetricSmileLik
 
   // A right-side muscle on the half model: one clear line, no output.
   const std::string bad = dir / "bad.vtu";
-  const ModuleRun r = RunModuleExecutable(
-    "SimulateMuscleActivation", {(out / "half-model.vtu").string(), bad, "--muscles", "ZygomaticusMajor_R"});
+  const ModuleRun r = RunModuleExecutable("SimulateMuscleActivation",
+                                          {(out / "half-model.vtu").string(), bad, "--muscles", "ZygomaticusMajor_R"});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_EQ(r.ErrLines().size(), 1u) << r.err;
   EXPECT_NE(r.err.find("right side"), std::string::npos) << r.err;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // FaceModelPipeline end to end on the bundled real CT with its shipped control points: the model,
 // its exports read by tools nobody here wrote (VTK, Gmsh, CalculiX), the report re-measured
 // independently, the pictures; muscle activation of that speaker model with CalculiX (issue 8);
@@ -68,8 +70,8 @@ TEST(FaceModelPipelineModule, BundledCTGivesAValidModelReportAndPictures)
   ScratchDirectory dir("pipeline");
   const fs::path out = dir.path() / "speaker";
   const std::string ret = dir / "ret.txt";
-  const ModuleRun run =
-    RunModuleExecutable("FaceModelPipeline", {kCT, kPoints, "--outputDirectory", out.string(), "--returnparameterfile", ret}, true);
+  const ModuleRun run = RunModuleExecutable(
+    "FaceModelPipeline", {kCT, kPoints, "--outputDirectory", out.string(), "--returnparameterfile", ret}, true);
   ASSERT_EQ(run.exitCode, 0) << run.err;
   std::printf("%s", run.out.substr(run.out.find("Model:")).c_str());
   for (const char* f : {"model.vtu", "model.inp", "model.feb", "model.msh", "transform.nrrd", "skin.vtp", "skull.vtp",
@@ -78,7 +80,8 @@ TEST(FaceModelPipelineModule, BundledCTGivesAValidModelReportAndPictures)
   for (const char* f : {"model-skin-error.png", "lips.png", "muscles.png"})
     EXPECT_TRUE(IsPNG(out / f)) << f;
   for (const auto& e : fs::directory_iterator(dir.path()))
-    EXPECT_EQ(e.path().filename().string().find(".partial-"), std::string::npos) << "staging directory left: " << e.path();
+    EXPECT_EQ(e.path().filename().string().find(".partial-"), std::string::npos)
+      << "staging directory left: " << e.path();
 
   // VTK reads the model with its arrays; VTK's quality filter agrees with the report.
   vtkNew<vtkXMLUnstructuredGridReader> reader;
@@ -130,7 +133,8 @@ TEST(FaceModelPipelineModule, BundledCTGivesAValidModelReportAndPictures)
   // Gmsh loads the .msh; the .feb holds the model's node and element counts.
   const std::string gmshLog = (dir.path() / "gmsh.log").string();
   // (Not Shell(): it sends the output to /dev/null.)
-  const int status = std::system(("gmsh -check '" + (out / "model.msh").string() + "' > '" + gmshLog + "' 2>&1").c_str());
+  const int status =
+    std::system(("gmsh -check '" + (out / "model.msh").string() + "' > '" + gmshLog + "' 2>&1").c_str());
   const int gmsh = WIFEXITED(status) ? WEXITSTATUS(status) : 128;
   EXPECT_NE(Slurp(gmshLog).find("Checking for duplicate nodes"), std::string::npos) << Slurp(gmshLog);
   EXPECT_TRUE(gmsh == 0 || gmsh == 1) << gmsh; // 1: errors found, which must be only those below
@@ -147,10 +151,12 @@ TEST(FaceModelPipelineModule, BundledCTGivesAValidModelReportAndPictures)
   // The lips' contact surfaces in all three formats.
   EXPECT_NE(Slurp(out / "model.msh").find("\"upperLipContactFaces\""), std::string::npos);
   EXPECT_NE(Slurp(out / "model.inp").find("*SURFACE, NAME=S_LOWERLIP, TYPE=ELEMENT"), std::string::npos);
-  EXPECT_NE(Slurp(out / "model.feb").find("<contact type=\"sliding-elastic\" surface_pair=\"lips\">"), std::string::npos);
+  EXPECT_NE(Slurp(out / "model.feb").find("<contact type=\"sliding-elastic\" surface_pair=\"lips\">"),
+            std::string::npos);
   const std::string feb = Slurp(out / "model.feb");
   const auto count = [&](const std::regex& r) {
-    return static_cast<std::size_t>(std::distance(std::sregex_iterator(feb.begin(), feb.end(), r), std::sregex_iterator()));
+    return static_cast<std::size_t>(
+      std::distance(std::sregex_iterator(feb.begin(), feb.end(), r), std::sregex_iterator()));
   };
   EXPECT_EQ(count(std::regex("<node id=")), model.nodes.size());
   EXPECT_EQ(count(std::regex("<elem id=")), model.elements.size());
@@ -208,19 +214,22 @@ TEST(FaceModelPipelineModule, BadInputFailsCleanly)
   ScratchDirectory dir("pipeline-bad");
   const fs::path out = dir.path() / "speaker";
   // No control points file.
-  ExpectCleanFailure(RunModuleExecutable("FaceModelPipeline", {kCT, dir / "none.mrk.json", "--outputDirectory", out.string(), "--noPictures"}), out,
-                     "none.mrk.json");
+  ExpectCleanFailure(RunModuleExecutable("FaceModelPipeline", {kCT, dir / "none.mrk.json", "--outputDirectory",
+                                                               out.string(), "--noPictures"}),
+                     out, "none.mrk.json");
   // An empty list of control points.
-  std::ofstream(dir / "empty.mrk.json") << R"({"markups": [{"type": "Fiducial", "coordinateSystem": "LPS", "controlPoints": []}]})";
-  ExpectCleanFailure(
-    RunModuleExecutable("FaceModelPipeline", {kCT, dir / "empty.mrk.json", "--outputDirectory", out.string(), "--noPictures"}), out,
-    "control points");
+  std::ofstream(dir / "empty.mrk.json")
+    << R"({"markups": [{"type": "Fiducial", "coordinateSystem": "LPS", "controlPoints": []}]})";
+  ExpectCleanFailure(RunModuleExecutable("FaceModelPipeline", {kCT, dir / "empty.mrk.json", "--outputDirectory",
+                                                               out.string(), "--noPictures"}),
+                     out, "control points");
   // A control point outside the volume (here: the file's points shifted 1 m).
   std::string shifted = Slurp(kPoints);
   shifted = std::regex_replace(shifted, std::regex("\"position\": \\[\\s*([-0-9.e]+)"), "\"position\": [$1e3");
   ASSERT_NE(shifted, Slurp(kPoints));
   std::ofstream(dir / "far.mrk.json") << shifted;
-  ExpectCleanFailure(RunModuleExecutable("FaceModelPipeline", {kCT, dir / "far.mrk.json", "--outputDirectory", out.string(), "--noPictures"}),
+  ExpectCleanFailure(RunModuleExecutable("FaceModelPipeline", {kCT, dir / "far.mrk.json", "--outputDirectory",
+                                                               out.string(), "--noPictures"}),
                      out, "outside the CT volume");
   // A CT without a head: a uniform block of air.
   std::ofstream air(dir / "air.nrrd");
@@ -229,10 +238,11 @@ TEST(FaceModelPipelineModule, BadInputFailsCleanly)
   for (int i = 0; i < 24 * 24 * 24; ++i)
     air << "-1000\n";
   air.close();
-  std::string nearAir = std::regex_replace(Slurp(kPoints), std::regex("\"position\": \\[[^\\]]*\\]"), "\"position\": [40, 40, 40]");
+  std::string nearAir =
+    std::regex_replace(Slurp(kPoints), std::regex("\"position\": \\[[^\\]]*\\]"), "\"position\": [40, 40, 40]");
   std::ofstream(dir / "inair.mrk.json") << nearAir;
-  const ModuleRun noHead =
-    RunModuleExecutable("FaceModelPipeline", {dir / "air.nrrd", dir / "inair.mrk.json", "--outputDirectory", out.string(), "--noPictures"});
+  const ModuleRun noHead = RunModuleExecutable(
+    "FaceModelPipeline", {dir / "air.nrrd", dir / "inair.mrk.json", "--outputDirectory", out.string(), "--noPictures"});
   EXPECT_EQ(noHead.exitCode, 1) << noHead.err;
   EXPECT_EQ(noHead.ErrLines().size(), 1u) << noHead.err;
   EXPECT_FALSE(fs::exists(out));

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // LocalRefinement as a user runs it on a registered synthetic atlas.
 #include "mmrepAtlasRegistration.h"
 #include "mmrepElasticTestData.h"
@@ -31,9 +33,9 @@ TEST(ElasticLocalRefinementModule, RefinesTheLipsAndLeavesTheRestBitIdentical)
   const auto registered = mmrep::RegisterAtlas(atlas.mesh, atlas.plane, subject, coarse).mesh;
   mmrep::WriteFEMesh(registered, dir / "registered.vtu");
   mmrep::WriteSurface(subject.skin, dir / "skin.vtp");
-  const auto run = RunModuleExecutable("LocalRefinement", {dir / "registered.vtu", dir / "skin.vtp", dir / "out.vtu",
-                                                           "--report", dir / "report.json", "--returnparameterfile",
-                                                           dir / "values.txt"});
+  const auto run =
+    RunModuleExecutable("LocalRefinement", {dir / "registered.vtu", dir / "skin.vtp", dir / "out.vtu", "--report",
+                                            dir / "report.json", "--returnparameterfile", dir / "values.txt"});
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const auto values = ReadReturnParameters(dir / "values.txt");
   const double before = std::stod(values.at("lipsMeanBefore")), after = std::stod(values.at("lipsMeanAfter"));
@@ -53,8 +55,8 @@ TEST(ElasticLocalRefinementModule, RefinesTheLipsAndLeavesTheRestBitIdentical)
   const auto json = nlohmann::json::parse(mmrep::testing::Slurp(dir / "report.json"));
   EXPECT_DOUBLE_EQ(json["after"]["region"]["mean"].get<double>(), after);
   // Same run with a Markdown report: the Q∘R row holds the region's errors.
-  const auto md = RunModuleExecutable("LocalRefinement", {dir / "registered.vtu", dir / "skin.vtp", dir / "out2.vtu",
-                                                          "--report", dir / "report.md"});
+  const auto md = RunModuleExecutable(
+    "LocalRefinement", {dir / "registered.vtu", dir / "skin.vtp", dir / "out2.vtu", "--report", dir / "report.md"});
   ASSERT_EQ(md.exitCode, 0) << md.err;
   const auto text = mmrep::testing::Slurp(dir / "report.md");
   char cells[64];
@@ -70,7 +72,8 @@ TEST(ElasticLocalRefinementModule, BadInputGivesOneLineAndNoOutput)
   const auto atlas = MakeAtlas();
   mmrep::WriteFEMesh(atlas.mesh, dir / "mesh.vtu");
   mmrep::WriteSurface(MakeSurface(SkinRadii(), Truth{}, 5.0), dir / "skin.vtp");
-  auto run = RunModuleExecutable("LocalRefinement", {dir / "mesh.vtu", dir / "skin.vtp", dir / "out.vtu", "--nodeSet", "nose"});
+  auto run =
+    RunModuleExecutable("LocalRefinement", {dir / "mesh.vtu", dir / "skin.vtp", dir / "out.vtu", "--nodeSet", "nose"});
   EXPECT_EQ(run.exitCode, 1);
   ASSERT_EQ(run.ErrLines().size(), 1u) << run.err;
   EXPECT_NE(run.err.find("'nose'"), std::string::npos) << run.err;

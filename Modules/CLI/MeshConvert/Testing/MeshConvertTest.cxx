@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // Runs build/bin/MeshConvert as a user would and checks its files, stdout and stderr.
 #include "mmrepFEMeshIO.h"
 #include "mmrepHalfModel.h"
@@ -20,7 +22,10 @@ using mmrep::testing::Run;
 namespace
 {
 
-std::string Quote(const fs::path& p) { return "'" + p.string() + "'"; }
+std::string Quote(const fs::path& p)
+{
+  return "'" + p.string() + "'";
+}
 
 mmrep::testing::CommandResult Convert(const fs::path& in, const fs::path& out, const fs::path& dir)
 {
@@ -136,14 +141,17 @@ TEST(MeshConvert, HalfWritesTheLeftHalfModel)
   const auto half = dir / "half.vtu", inp = dir / "half.inp";
   for (const auto& out : {half, inp})
   {
-    const auto result = mmrep::testing::Run(std::string("'") + MESHCONVERT_EXECUTABLE + "' --half " + Quote(atlas) + " " + Quote(out), dir);
+    const auto result = mmrep::testing::Run(
+      std::string("'") + MESHCONVERT_EXECUTABLE + "' --half " + Quote(atlas) + " " + Quote(out), dir);
     ASSERT_EQ(result.status, 0) << result.err;
   }
-  mmrep::testing::ExpectSameMesh(mmrep::LeftHalfModel(mmrep::ReadFEMesh(atlas.string())), mmrep::ReadFEMesh(half.string()));
+  mmrep::testing::ExpectSameMesh(mmrep::LeftHalfModel(mmrep::ReadFEMesh(atlas.string())),
+                                 mmrep::ReadFEMesh(half.string()));
   EXPECT_NE(ReadText(inp).find("*TRANSFORM, NSET=symmetryBoundary, TYPE=R"), std::string::npos);
 
   const auto again = dir / "again.vtu";
-  const auto result = mmrep::testing::Run(std::string("'") + MESHCONVERT_EXECUTABLE + "' --half " + Quote(half) + " " + Quote(again), dir);
+  const auto result = mmrep::testing::Run(
+    std::string("'") + MESHCONVERT_EXECUTABLE + "' --half " + Quote(half) + " " + Quote(again), dir);
   EXPECT_NE(result.status, 0);
   EXPECT_EQ(LineCount(result.err), 1u) << result.err;
   EXPECT_NE(result.err.find("already is a half model"), std::string::npos) << result.err;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // MeshQuality module: output cell arrays against vtkMeshQuality run on the same grid, return
 // parameters against the library summary, and failures (missing file, empty mesh) without output.
 #include "mmrepFEMeshIO.h"
@@ -47,8 +49,8 @@ std::string Slurp(const fs::path& p)
 RunResult RunModule(const std::string& arguments, const fs::path& dir)
 {
   const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string command = std::string("'") + MESHQUALITY_EXE + "' " + arguments + " > '" + out.string() +
-                              "' 2> '" + err.string() + "'";
+  const std::string command =
+    std::string("'") + MESHQUALITY_EXE + "' " + arguments + " > '" + out.string() + "' 2> '" + err.string() + "'";
   const int status = std::system(command.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, Slurp(out), Slurp(err)};
 }
@@ -78,9 +80,8 @@ FEMesh PerturbedMesh()
     for (int j = 0; j + 1 < ny; ++j)
       for (int i = 0; i + 1 < nx; ++i)
       {
-        const std::int32_t v[8] = {id(i, j, k),         id(i + 1, j, k),         id(i + 1, j + 1, k),
-                                   id(i, j + 1, k),     id(i, j, k + 1),         id(i + 1, j, k + 1),
-                                   id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)};
+        const std::int32_t v[8] = {id(i, j, k),     id(i + 1, j, k),     id(i + 1, j + 1, k),     id(i, j + 1, k),
+                                   id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)};
         Element e;
         e.layer = TissueLayer::Dermis;
         if ((i + j) % 3 == 1)
@@ -152,8 +153,8 @@ TEST(QualityModule, CellArraysMatchVtkMeshQualityAndSummaryMatchesLibrary)
   const FEMesh mesh = PerturbedMesh();
   WriteFEMesh(mesh, (dir / "in.vtu").string());
   const RunResult r = RunModule("'" + (dir / "in.vtu").string() + "' --outputMesh '" + (dir / "out.vtu").string() +
-                            "' --threshold 0.4 --returnparameterfile '" + (dir / "ret.txt").string() + "'",
-                          dir);
+                                  "' --threshold 0.4 --returnparameterfile '" + (dir / "ret.txt").string() + "'",
+                                dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("ScaledJacobian"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("<filter-end>"), std::string::npos) << r.out;
@@ -218,8 +219,8 @@ TEST(QualityModule, MissingInputFailsWithOneLineAndNoOutput)
 {
   const fs::path dir = TestDir("Missing");
   const RunResult r = RunModule("'" + (dir / "nope.vtu").string() + "' --outputMesh '" + (dir / "out.vtu").string() +
-                            "' --returnparameterfile '" + (dir / "ret.txt").string() + "'",
-                          dir);
+                                  "' --returnparameterfile '" + (dir / "ret.txt").string() + "'",
+                                dir);
   EXPECT_NE(r.exitCode, 0);
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_NE(r.err.find("nope.vtu"), std::string::npos) << r.err;
@@ -241,8 +242,8 @@ TEST(QualityModule, MeshWithoutSolidElementsFailsWithoutOutput)
   mesh.elements.push_back(cable);
   WriteFEMesh(mesh, (dir / "cables.vtu").string());
   const RunResult r = RunModule("'" + (dir / "cables.vtu").string() + "' --outputMesh '" + (dir / "out.vtu").string() +
-                            "' --returnparameterfile '" + (dir / "ret.txt").string() + "'",
-                          dir);
+                                  "' --returnparameterfile '" + (dir / "ret.txt").string() + "'",
+                                dir);
   EXPECT_NE(r.exitCode, 0);
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_FALSE(fs::exists(dir / "out.vtu"));

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // MeshReparation module: runs the executable on generated tangled shells (under xvfb-run when
 // there is no display) and checks its files against recomputations from the meshes it wrote.
 #include "mmrepFEMeshIO.h"
@@ -91,8 +93,9 @@ TEST(RepairModule, RepairsTangledMeshWithReportAndHistogram)
   ASSERT_TRUE(std::filesystem::exists(dir / "out.inp"));
   EXPECT_NE(Slurp(dir / "out.inp").find("*NODE"), std::string::npos);
   // Same run to .vtu to read the result back (deterministic: same nodes as the .inp).
-  const ModuleRun vtu = RunModuleExecutable("MeshReparation", {in.mesh, dir / "out.vtu", "--skinSurface", in.skin,
-                                                               "--skullSurface", in.skull, "--symmetryPlane", "0,0,0,1,0,0"});
+  const ModuleRun vtu =
+    RunModuleExecutable("MeshReparation", {in.mesh, dir / "out.vtu", "--skinSurface", in.skin, "--skullSurface",
+                                           in.skull, "--symmetryPlane", "0,0,0,1,0,0"});
   ASSERT_EQ(vtu.exitCode, 0) << vtu.err;
   const FEMesh output = ReadFEMesh(dir / "out.vtu");
 
@@ -115,8 +118,8 @@ TEST(RepairModule, RepairsTangledMeshWithReportAndHistogram)
   EXPECT_EQ(report["quality"]["after"]["inverted"].get<std::size_t>(), after.inverted);
   EXPECT_TRUE(report["failedElements"].empty());
   // Surface accuracy against a brute-force recomputation on the output mesh.
-  for (const auto& [set, surface] : {std::pair<std::string, vtkPolyData*>{"skin", Atlas().skin},
-                                     {"skull", Atlas().skull}, {"lips", Atlas().skin}})
+  for (const auto& [set, surface] :
+       {std::pair<std::string, vtkPolyData*>{"skin", Atlas().skin}, {"skull", Atlas().skull}, {"lips", Atlas().skin}})
   {
     EXPECT_NEAR(report["surfaceAccuracy"][set]["after"]["maxDistance"].get<double>(),
                 MaxDistanceBruteForce(output, set, surface), 1e-9)
@@ -179,10 +182,11 @@ TEST(RepairModule, HopelessMeshFailsWritesReportButNoMesh)
   std::sort(skin.begin(), skin.end());
   skin.erase(std::unique(skin.begin(), skin.end()), skin.end());
   const Inputs in = WriteInputs(dir, mesh);
-  const ModuleRun run = RunModuleExecutable(
-    "MeshReparation", {in.mesh, dir / "out.vtu", "--skinSurface", in.skin, "--skullSurface", in.skull, "--report",
-                       dir / "report.json", "--histogram", dir / "histogram.png"},
-    true);
+  const ModuleRun run =
+    RunModuleExecutable("MeshReparation",
+                        {in.mesh, dir / "out.vtu", "--skinSurface", in.skin, "--skullSurface", in.skull, "--report",
+                         dir / "report.json", "--histogram", dir / "histogram.png"},
+                        true);
   EXPECT_EQ(run.exitCode, 1);
   ASSERT_EQ(run.ErrLines().size(), 1u) << run.err;
   EXPECT_NE(run.err.find("elements stay below the scaled Jacobian threshold"), std::string::npos) << run.err;
@@ -205,7 +209,8 @@ TEST(RepairModule, ValidMeshWrittenUnchanged)
 {
   ScratchDirectory dir("repair-module");
   const Inputs in = WriteInputs(dir, Atlas().mesh);
-  const ModuleRun run = RunModuleExecutable("MeshReparation", {in.mesh, dir / "out.vtu", "--returnparameterfile", dir / "rp.txt"});
+  const ModuleRun run =
+    RunModuleExecutable("MeshReparation", {in.mesh, dir / "out.vtu", "--returnparameterfile", dir / "rp.txt"});
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const FEMesh output = ReadFEMesh(dir / "out.vtu");
   ASSERT_EQ(output.nodes.size(), Atlas().mesh.nodes.size());

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // SimulateMuscleActivation on the shipped atlas (a speaker model of the bundled CT): two CalculiX
 // solves (zygomaticus major left; orbicularis oris peripheralis) and the user-facing errors.
 #include "mmrepFEMeshIO.h"
@@ -38,7 +40,8 @@ Point3 NearestSkinNodeDisplacement(const std::string& vtu, const FEMesh& rest, c
       p = l.position;
   std::int32_t best = -1;
   for (auto n : rest.nodeSets.at("skin"))
-    if (best < 0 || (rest.nodes[static_cast<std::size_t>(n)] - p).norm() < (rest.nodes[static_cast<std::size_t>(best)] - p).norm())
+    if (best < 0 ||
+        (rest.nodes[static_cast<std::size_t>(n)] - p).norm() < (rest.nodes[static_cast<std::size_t>(best)] - p).norm())
       best = n;
   double t[3];
   u->GetTuple(best, t);
@@ -53,8 +56,8 @@ TEST(SimulateMuscleActivationModule, ZygomaticusMajorLeftRaisesLeftMouthCornerLa
     "SimulateMuscleActivation",
     // C3D8 and 30 % of the cited forces (few Newton iterations) for the module's plumbing and
     // directions; the default's figures are asserted on the speaker model (FaceModelPipelineModule).
-    {kAtlas, out, "--muscles", "ZygomaticusMajor_L", "--elementType", "C3D8", "--forceScale", "0.3", "--picture", png, "--lipsPicture", lips,
-     "--returnparameterfile", ret},
+    {kAtlas, out, "--muscles", "ZygomaticusMajor_L", "--elementType", "C3D8", "--forceScale", "0.3", "--picture", png,
+     "--lipsPicture", lips, "--returnparameterfile", ret},
     true);
   ASSERT_EQ(run.exitCode, 0) << run.err;
   std::printf("%s", run.out.substr(run.out.find("CalculiX:")).c_str());
@@ -109,11 +112,12 @@ TEST(SimulateMuscleActivationModule, OrbicularisOrisPeripheralisProtrudesAndClos
   const auto values = ReadReturnParameters(ret);
   const std::vector<double> upper = ReturnVector(values, "upperLipCenterDisplacement");
   const std::vector<double> lower = ReturnVector(values, "lowerLipCenterDisplacement");
-  std::printf("UpperLipCenter: anterior (-y) %.3f mm, superior %.3f mm; LowerLipCenter: anterior %.3f mm, superior %.3f mm; "
-              "lip gap change %.3f mm\n",
-              -upper[1], upper[2], -lower[1], lower[2], upper[2] - lower[2]);
-  EXPECT_LT(upper[1], -0.15); // forward (anterior is -y in LPS); measured 0.233 mm
-  EXPECT_LT(lower[1], -0.02); // measured 0.039 mm with the cited 0.43 N per track
+  std::printf(
+    "UpperLipCenter: anterior (-y) %.3f mm, superior %.3f mm; LowerLipCenter: anterior %.3f mm, superior %.3f mm; "
+    "lip gap change %.3f mm\n",
+    -upper[1], upper[2], -lower[1], lower[2], upper[2] - lower[2]);
+  EXPECT_LT(upper[1], -0.15);            // forward (anterior is -y in LPS); measured 0.233 mm
+  EXPECT_LT(lower[1], -0.02);            // measured 0.039 mm with the cited 0.43 N per track
   EXPECT_LT(upper[2] - lower[2], -0.05); // the centres move toward each other (the gap closes)
   EXPECT_LT(upper[2], 0);                // the upper lip moves down
 }
@@ -121,7 +125,8 @@ TEST(SimulateMuscleActivationModule, OrbicularisOrisPeripheralisProtrudesAndClos
 TEST(SimulateMuscleActivationModule, UnknownMuscleListsTheValidNames)
 {
   ScratchDirectory dir("unknown");
-  const ModuleRun run = RunModuleExecutable("SimulateMuscleActivation", {kAtlas, dir / "o.vtu", "--muscles", "zygomaticusMajor_L"});
+  const ModuleRun run =
+    RunModuleExecutable("SimulateMuscleActivation", {kAtlas, dir / "o.vtu", "--muscles", "zygomaticusMajor_L"});
   EXPECT_EQ(run.exitCode, 1);
   ASSERT_EQ(run.ErrLines().size(), 1u) << run.err;
   EXPECT_NE(run.err.find("unknown muscle 'zygomaticusMajor_L'"), std::string::npos) << run.err;
@@ -142,10 +147,12 @@ TEST(SimulateMuscleActivationModule, ModelWithoutMusclesIsRefused)
   mesh.elements = solids;
   std::vector<std::string> muscleSets;
   for (auto it = mesh.elementSets.begin(); it != mesh.elementSets.end();)
-    it = (it->first == "epidermis" || it->first == "dermis" || it->first == "hypodermis") ? std::next(it) : mesh.elementSets.erase(it);
+    it = (it->first == "epidermis" || it->first == "dermis" || it->first == "hypodermis") ? std::next(it)
+                                                                                          : mesh.elementSets.erase(it);
   mesh.nodes.resize(mesh.nodes.size()); // muscle nodes stay as unused nodes
   WriteFEMesh(mesh, dir / "plain.vtu");
-  const ModuleRun run = RunModuleExecutable("SimulateMuscleActivation", {dir / "plain.vtu", dir / "o.vtu", "--muscles", "ZygomaticusMajor_L"});
+  const ModuleRun run = RunModuleExecutable("SimulateMuscleActivation",
+                                            {dir / "plain.vtu", dir / "o.vtu", "--muscles", "ZygomaticusMajor_L"});
   EXPECT_EQ(run.exitCode, 1);
   EXPECT_NE(run.err.find("has no muscles"), std::string::npos) << run.err;
   EXPECT_FALSE(fs::exists(dir / "o.vtu"));
@@ -154,8 +161,8 @@ TEST(SimulateMuscleActivationModule, ModelWithoutMusclesIsRefused)
 TEST(SimulateMuscleActivationModule, MissingCalculiXIsReported)
 {
   ScratchDirectory dir("noccx");
-  const ModuleRun run = RunModuleExecutable("SimulateMuscleActivation",
-                                            {kAtlas, dir / "o.vtu", "--muscles", "ZygomaticusMajor_L", "--ccx", "ccx-missing"});
+  const ModuleRun run = RunModuleExecutable(
+    "SimulateMuscleActivation", {kAtlas, dir / "o.vtu", "--muscles", "ZygomaticusMajor_L", "--ccx", "ccx-missing"});
   EXPECT_EQ(run.exitCode, 1);
   EXPECT_NE(run.err.find("not found on PATH: install the Debian package calculix-ccx"), std::string::npos) << run.err;
   EXPECT_FALSE(fs::exists(dir / "o.vtu"));

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // SkinSkullSurfaces as a user runs it: bundled CTs (with pictures), a DICOM series, bad input.
 #include "mmrepImageIO.h"
 #include "mmrepModuleRunner.h"
@@ -35,11 +37,11 @@ TEST_P(SkinSkullSurfacesOnCT, OneClosedSkinOneClosedSkullAndAPicture)
   const std::string name = GetParam();
   const std::string picture = PictureDir() + "/SkinSkullSurfaces-" + name + ".png";
   std::filesystem::remove(picture);
-  const auto run = RunModuleExecutable(
-    "SkinSkullSurfaces",
-    {std::string(MMREP_SAMPLE_DATA) + "/" + name + ".nrrd", dir / "skin.vtp", dir / "skull.stl", "--skinMask",
-     dir / "skin.nrrd", "--snapshot", picture, "--returnparameterfile", dir / "out.txt"},
-    true);
+  const auto run = RunModuleExecutable("SkinSkullSurfaces",
+                                       {std::string(MMREP_SAMPLE_DATA) + "/" + name + ".nrrd", dir / "skin.vtp",
+                                        dir / "skull.stl", "--skinMask", dir / "skin.nrrd", "--snapshot", picture,
+                                        "--returnparameterfile", dir / "out.txt"},
+                                       true);
   ASSERT_EQ(run.exitCode, 0) << run.err;
   EXPECT_NE(run.out.find("<filter-end>"), std::string::npos);
   auto skin = mmrep::ReadSurface(dir / "skin.vtp");
@@ -152,6 +154,7 @@ TEST(SkinSkullSurfaces, BadInputOneLineNonZeroNoOutput)
     ASSERT_EQ(lines.size(), 1u) << run.err;
     EXPECT_NE(lines[0].find(c.expect), std::string::npos) << lines[0];
     for (const auto& e : dir.Entries())
-      EXPECT_TRUE(e == "flat.nrrd" || e == "nohead.nrrd" || e == "truncated.nrrd") << "left behind: " << e << " (" << c.expect << ")";
+      EXPECT_TRUE(e == "flat.nrrd" || e == "nohead.nrrd" || e == "truncated.nrrd")
+        << "left behind: " << e << " (" << c.expect << ")";
   }
 }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // SymmetryPlane module: return values and plane markup against the library on the same file, and
 // failures (missing file, empty surface, surface without triangles) without output.
 #include "mmrepModuleRunner.h"
@@ -30,8 +32,8 @@ std::vector<double> Parse(const std::string& text)
 TEST(SymmetryPlaneModule, ReturnsTheLibraryPlaneAndWritesAMarkup)
 {
   ScratchDirectory dir("SymmetryPlaneModule");
-  const Eigen::Matrix3d r =
-    Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY()).toRotationMatrix() * Eigen::AngleAxisd(-0.1, Eigen::Vector3d::UnitZ());
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY()).toRotationMatrix() *
+                            Eigen::AngleAxisd(-0.1, Eigen::Vector3d::UnitZ());
   const Eigen::Vector3d t(3, -40, 12);
   mmrep::WriteSurface(mmrep::testing::SymmetricHead(r, t), dir / "head.vtp");
   const auto expected = mmrep::EstimateSymmetryPlane(mmrep::ReadSurface(dir / "head.vtp"));
@@ -92,8 +94,8 @@ TEST(SymmetryPlaneModule, BadInputFailsWithOneLineAndNoOutput)
   std::ofstream(dir / "empty.vtk") << "# vtk DataFile Version 3.0\nempty\nASCII\nDATASET POLYDATA\nPOINTS 0 float\n";
   for (const std::string& input : {dir / "missing.vtp", dir / "empty.vtk", dir / "cloud.vtp"})
   {
-    const auto run = RunModuleExecutable("SymmetryPlane", {input, "--outputPlane", dir / "plane.mrk.json",
-                                                           "--returnparameterfile", dir / "ret.txt"});
+    const auto run = RunModuleExecutable(
+      "SymmetryPlane", {input, "--outputPlane", dir / "plane.mrk.json", "--returnparameterfile", dir / "ret.txt"});
     EXPECT_NE(run.exitCode, 0) << input;
     ASSERT_EQ(run.ErrLines().size(), 1u) << run.err;
     EXPECT_NE(run.err.find("SymmetryPlane"), std::string::npos) << run.err;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026 MMRep developers (see LICENSE)
 // SyntheticSubject module: the image, both fields and the moved landmarks against the library, and
 // failures (missing file, rotation above 15°, unpaired landmark options) without output.
 #include "mmrepLandmarkIO.h"
@@ -21,11 +23,28 @@ TEST(SyntheticSubjectModule, WritesImageFieldsAndLandmarks)
   ScratchDirectory dir("SyntheticSubjectModule");
   std::vector<mmrep::Landmark> in = {{"nose", {5, -90, 40}}, {"chin", {0, -70, -20}}, {"earL", {70, 0, 10}}};
   mmrep::WriteLandmarks(in, dir / "in.mrk.json");
-  const auto run = RunModuleExecutable(
-    "SyntheticSubject", {kSource, dir / "subject.nrrd", "--roll", "-12", "--yaw", "7", "--pitch", "3", "--translation",
-                         "2,5,-4", "--seed", "42", "--forwardField", dir / "fwd.nrrd", "--inverseField", dir / "inv.mha",
-                         "--landmarksIn", dir / "in.mrk.json", "--landmarksOut", dir / "out.fcsv",
-                         "--returnparameterfile", dir / "ret.txt"});
+  const auto run = RunModuleExecutable("SyntheticSubject", {kSource,
+                                                            dir / "subject.nrrd",
+                                                            "--roll",
+                                                            "-12",
+                                                            "--yaw",
+                                                            "7",
+                                                            "--pitch",
+                                                            "3",
+                                                            "--translation",
+                                                            "2,5,-4",
+                                                            "--seed",
+                                                            "42",
+                                                            "--forwardField",
+                                                            dir / "fwd.nrrd",
+                                                            "--inverseField",
+                                                            dir / "inv.mha",
+                                                            "--landmarksIn",
+                                                            dir / "in.mrk.json",
+                                                            "--landmarksOut",
+                                                            dir / "out.fcsv",
+                                                            "--returnparameterfile",
+                                                            dir / "ret.txt"});
   ASSERT_EQ(run.exitCode, 0) << run.err;
 
   mmrep::SyntheticWarpParameters p;
