@@ -3,6 +3,8 @@
 // Jaw: the mandible's rigid rotation about the condylar axis.
 #include "mmrepJaw.h"
 
+#include "mmrepHalfModel.h"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -30,7 +32,8 @@ Point3 Centroid(const FEMesh& mesh, const std::vector<std::int32_t>& ids)
 bool HasJaw(const FEMesh& mesh)
 {
   const auto* axis = NonEmpty(mesh, kJawAxisSet);
-  return NonEmpty(mesh, kMandibleSet) && NonEmpty(mesh, kMaxillaSet) && axis && axis->size() == 2;
+  return NonEmpty(mesh, kMandibleSet) && NonEmpty(mesh, kMaxillaSet) && axis &&
+         (axis->size() == 2 || (axis->size() == 1 && IsHalfModel(mesh)));
 }
 
 Eigen::Isometry3d JawRotation(const FEMesh& mesh, double degrees)
@@ -40,14 +43,16 @@ Eigen::Isometry3d JawRotation(const FEMesh& mesh, double degrees)
                                 "rebuild it from the current atlas");
   const auto& axisNodes = mesh.nodeSets.at(kJawAxisSet);
   const Point3 left = mesh.nodes[static_cast<std::size_t>(axisNodes[0])];
-  const Point3 right = mesh.nodes[static_cast<std::size_t>(axisNodes[1])];
-  const Point3 axis = (left - right).normalized();
+  // On a half model the right condyle is the left one's mirror image: the axis is the plane normal.
+  const Point3 axis = axisNodes.size() == 2
+                        ? Point3((left - mesh.nodes[static_cast<std::size_t>(axisNodes[1])]).normalized())
+                        : SymmetryPlaneOf(mesh).normal;
   const Point3 mandible = Centroid(mesh, mesh.nodeSets.at(kMandibleSet));
   const Point3 maxilla = Centroid(mesh, mesh.nodeSets.at(kMaxillaSet));
   const double angle = degrees * M_PI / 180.0;
   auto about = [&](double a) {
     Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-    t.translate(right).rotate(Eigen::AngleAxisd(a, axis)).translate(-right);
+    t.translate(left).rotate(Eigen::AngleAxisd(a, axis)).translate(-left);
     return t;
   };
   // Opening moves the mandible away from the maxilla: test with a small angle.

@@ -4,7 +4,8 @@
 // fixed) and `mandible` (moves rigidly with the jaw), and the jaw's rotation axis through the two
 // condyles, stored as the two nodes of set `jawAxis` (left condyle first). Those two nodes belong to
 // no element: every stage that moves the model's nodes (registration, refinement) carries them, so
-// a speaker's model has the speaker's axis.
+// a speaker's model has the speaker's axis. A half model (mmrepHalfModel.h) keeps only the left
+// condyle: the axis of a symmetric jaw is the symmetry plane's normal through it.
 #pragma once
 
 #include "mmrepFEMesh.h"
@@ -23,7 +24,8 @@ inline const std::string kJawAxisSet = "jawAxis";
 // The range of jaw opening angles the simulation accepts, degrees (negative: clenching past rest).
 constexpr double kMinJawAngle = -5.0, kMaxJawAngle = 30.0;
 
-// True when the model has non-empty `mandible` and `maxilla` sets and a two-node `jawAxis`.
+// True when the model has non-empty `mandible` and `maxilla` sets and a two-node `jawAxis` (one
+// node on a half model).
 bool HasJaw(const FEMesh& mesh);
 
 // The rigid motion of the mandible for an opening of `degrees` about the condylar axis; the sense

@@ -4,6 +4,7 @@
 #include "mmrepActivationRequest.h"
 
 #include "mmrepDeckSections.h"
+#include "mmrepBoneSliding.h"
 #include "mmrepJaw.h"
 #include "mmrepLipContact.h"
 
@@ -110,6 +111,9 @@ DeckOptions MakeDeckOptions(const FEMesh& mesh, const ActivationRequest& request
   CheckActivations(mesh, deck.activations, jawAngle == 0);
   if (request.lipSupport)
     deck.slidingNodes = LipSupportNodes(mesh);
+  if (request.boneSliding)
+    for (const SlidingNode& s : BoneSlidingNodes(mesh))
+      deck.slidingNodes.push_back(s);
   return deck;
 }
 

@@ -26,10 +26,11 @@ struct ActivationRequest
   std::array<double, 3> layerScale{1, 1, 1}; // epidermis, dermis, hypodermis
   std::string elementType = "C3D8R";
   double forceScale = 1;
-  double initialIncrement = 0.5;
+  double initialIncrement = 0.1; // the module's default (its XML); the library's StepControl keeps 0.5
   int maxIncrements = 100;
   bool lipContact = true;
   bool lipSupport = true;
+  bool boneSliding = false; // the maxilla's nodes slide on the bone except the anchors (mmrepBoneSliding.h)
 };
 
 // One material per layer: C10 and C20 from the request (Pa -> N/mm²) with D1 keeping the Poisson

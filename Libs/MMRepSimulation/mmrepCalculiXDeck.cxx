@@ -83,7 +83,7 @@ void CheckSolverOptions(const FEMesh& mesh, const DeckOptions& options)
 
 // Fixed nodes: those of the set that carry a solid (a node without a solid has no stiffness). A
 // model with a jaw: the maxilla is fixed and the mandible moves with the jaw (a half model keeps
-// maxilla and mandible but not the axis's right condyle: it cannot open the jaw).
+// maxilla, mandible and the left condyle: its axis is the plane normal, mmrepJaw.h).
 void PlanBone(const FEMesh& mesh, const DeckOptions& options, DeckPlan& plan)
 {
   const bool jaw = options.fixedNodeSet == "skull" && mesh.nodeSets.count(kMaxillaSet) &&
@@ -100,8 +100,12 @@ void PlanBone(const FEMesh& mesh, const DeckOptions& options, DeckPlan& plan)
   const auto fixedIt = mesh.nodeSets.find(jaw ? kMaxillaSet : options.fixedNodeSet);
   if (fixedIt == mesh.nodeSets.end())
     throw std::invalid_argument("the model has no node set '" + options.fixedNodeSet + "' to fix");
+  std::vector<char> slides(mesh.nodes.size(), 0); // bone nodes that slide instead
+  for (const auto& s : options.slidingNodes)
+    if (s.onBone && s.node >= 0 && static_cast<std::size_t>(s.node) < mesh.nodes.size())
+      slides[static_cast<std::size_t>(s.node)] = 1;
   for (auto n : fixedIt->second)
-    if (plan.used[static_cast<std::size_t>(n)])
+    if (plan.used[static_cast<std::size_t>(n)] && !slides[static_cast<std::size_t>(n)])
       plan.fixed.push_back(n);
   if (jaw)
     for (auto n : mesh.nodeSets.at(kMandibleSet))

@@ -14,6 +14,38 @@
 namespace mmrep::simulation
 {
 
+std::map<std::int32_t, Point3> SurfaceNodeNormals(const FEMesh& mesh, const std::string& nodeSet)
+{
+  std::map<std::int32_t, Point3> normals;
+  if (!mesh.nodeSets.count(nodeSet))
+    return normals;
+  const std::vector<char> mask = NodeSetMask(mesh, nodeSet);
+  for (const BoundaryFace& face : BoundaryFaces(mesh, &mask))
+  {
+    if (mesh.elements[static_cast<std::size_t>(face.element)].type != ElementType::Hexahedron)
+      continue;
+    const auto& id = face.nodes;
+    const Point3 a = mesh.nodes[static_cast<std::size_t>(id[2])] - mesh.nodes[static_cast<std::size_t>(id[0])];
+    const Point3 b = mesh.nodes[static_cast<std::size_t>(id[3])] - mesh.nodes[static_cast<std::size_t>(id[1])];
+    const Point3 n = 0.5 * a.cross(b); // area-weighted
+    for (auto v : id)
+    {
+      auto [it, fresh] = normals.emplace(v, Point3::Zero());
+      // Orientation is irrelevant for n·u = 0; keep the accumulated normals consistent.
+      it->second += (it->second.dot(n) < 0 ? -n : n);
+    }
+  }
+  for (auto it = normals.begin(); it != normals.end();)
+    if (it->second.norm() > 0)
+    {
+      it->second.normalize();
+      ++it;
+    }
+    else
+      it = normals.erase(it);
+  return normals;
+}
+
 std::vector<SlidingNode> LipSupportNodes(const FEMesh& mesh, double margin)
 {
   const auto inner = mesh.nodeSets.find("inner");
@@ -29,32 +61,14 @@ std::vector<SlidingNode> LipSupportNodes(const FEMesh& mesh, double margin)
     zmin = std::min(zmin, p.z());
     zmax = std::max(zmax, p.z());
   }
-  // The inner surface: boundary quadrilaterals of the hexahedra whose four nodes are inner nodes.
-  const std::vector<char> isInner = NodeSetMask(mesh, "inner");
-  std::map<std::int32_t, Point3> normals;
-  for (const BoundaryFace& face : BoundaryFaces(mesh, &isInner))
-  {
-    if (mesh.elements[static_cast<std::size_t>(face.element)].type != ElementType::Hexahedron)
-      continue;
-    const auto& id = face.nodes;
-    const Point3 a = mesh.nodes[static_cast<std::size_t>(id[2])] - mesh.nodes[static_cast<std::size_t>(id[0])];
-    const Point3 b = mesh.nodes[static_cast<std::size_t>(id[3])] - mesh.nodes[static_cast<std::size_t>(id[1])];
-    const Point3 n = 0.5 * a.cross(b); // area-weighted
-    for (auto v : id)
-    {
-      auto [it, fresh] = normals.emplace(v, Point3::Zero());
-      // Orientation is irrelevant for n·u = 0; keep the accumulated normals consistent.
-      it->second += (it->second.dot(n) < 0 ? -n : n);
-    }
-  }
+  const auto normals = SurfaceNodeNormals(mesh, "inner");
   std::vector<SlidingNode> out;
   for (const auto& [node, n] : normals)
   {
     const Point3& p = mesh.nodes[static_cast<std::size_t>(node)];
-    if (p.x() < xmin - margin || p.x() > xmax + margin || p.z() < zmin - margin || p.z() > zmax + margin ||
-        !(n.norm() > 0))
+    if (p.x() < xmin - margin || p.x() > xmax + margin || p.z() < zmin - margin || p.z() > zmax + margin)
       continue;
-    out.push_back({node, n.normalized()});
+    out.push_back({node, n});
   }
   return out;
 }

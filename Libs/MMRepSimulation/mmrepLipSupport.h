@@ -6,6 +6,8 @@
 #include "mmrepFEMesh.h"
 
 #include <cstdint>
+#include <map>
+#include <string>
 #include <vector>
 
 namespace mmrep::simulation
@@ -17,7 +19,13 @@ struct SlidingNode
 {
   std::int32_t node = -1;
   Point3 normal = Point3::UnitY();
+  bool onBone = false; // a bone node (of the fixed set) that slides instead of being fixed
 };
+
+// Area-weighted unit normals at the nodes of the boundary quadrilaterals of hexahedra whose four
+// nodes belong to node set `nodeSet` (orientation consistent per node, not outward); empty when the
+// set is missing.
+std::map<std::int32_t, Point3> SurfaceNodeNormals(const FEMesh& mesh, const std::string& nodeSet);
 
 // The nodes of set "inner" (inner surface where no bone was found) that lie behind the lips, i.e.
 // whose x (left-right) and z (inferior-superior) fall within the bounding box of node set "lips"

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Copyright (c) 2026 MMRep developers (see LICENSE)
 // Unit tests of the CalculiX deck, runner and .frd reader on small blocks with known answers.
+#include "mmrepBoneSliding.h"
 #include "mmrepMuscleActivation.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 #include <sstream>
 
 namespace
@@ -178,6 +180,70 @@ TEST(Simulation, BlockMuscleShortensAndIsSymmetric)
   EXPECT_LT(r.muscles[0].meanForce, fmax);
   EXPECT_GT(r.muscles[0].meanForce, 0.5 * fmax);
   EXPECT_GT(r.muscles[0].length, 0.5 * r.muscles[0].restLength);
+}
+
+// Bone sliding (mmrepBoneSliding.h) on a block whose bottom is the maxilla and whose top is skin:
+// the anchors are the bottom perimeter (side faces) and the bottom nodes of the track's end elements,
+// every other bottom node slides along z = 0 (normal ±z); the solve keeps them on the plane while
+// they move along it, and the block glued to the bone moves less.
+TEST(Simulation, BoneSlidingAnchorsEdgesAndMuscleOriginsAndSlidesTheRest)
+{
+  const int nx = 6, ny = 4, nz = 2;
+  const double h = 5;
+  FEMesh mesh = Block(nx, ny, nz, h);
+  mesh.nodeSets["maxilla"] = mesh.nodeSets.at("skull");
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
+    if (mesh.nodes[i].z() == nz * h)
+      mesh.nodeSets["skin"].push_back(static_cast<std::int32_t>(i));
+  AddMuscle(mesh, "M", {{7.5, 10, 2.5}, {12.5, 10, 2.5}, {17.5, 10, 2.5}, {22.5, 10, 2.5}}, nx, ny, h);
+  mesh.muscles.at("M").maximumForce = 0.2;
+  mesh.Validate();
+  // Expected anchors by brute force: bottom nodes on the block's sides or of the end elements (x in
+  // [5, 10] and [20, 25], y in [10, 15] at the bottom layer).
+  const auto& t = mesh.muscles.at("M");
+  std::set<std::int32_t> expected;
+  for (auto n : mesh.nodeSets.at("maxilla"))
+  {
+    const Point3& p = mesh.nodes[static_cast<std::size_t>(n)];
+    const bool side = p.x() == 0 || p.x() == nx * h || p.y() == 0 || p.y() == ny * h;
+    bool end = false;
+    for (auto e : {t.embedding.front().element, t.embedding.back().element})
+      for (int k = 0; k < 8; ++k)
+        end = end || mesh.elements[static_cast<std::size_t>(e)].nodes[static_cast<std::size_t>(k)] == n;
+    if (side || end)
+      expected.insert(n);
+  }
+  const auto anchors = sim::BoneAnchorNodes(mesh);
+  EXPECT_EQ(std::set<std::int32_t>(anchors.begin(), anchors.end()), expected);
+  const auto sliding = sim::BoneSlidingNodes(mesh);
+  EXPECT_EQ(sliding.size() + expected.size(), mesh.nodeSets.at("maxilla").size());
+  for (const auto& s : sliding)
+  {
+    EXPECT_TRUE(s.onBone);
+    EXPECT_EQ(expected.count(s.node), 0u);
+    EXPECT_NEAR(std::abs(s.normal.z()), 1.0, 1e-12);
+  }
+
+  sim::ActivationOptions options;
+  options.deck.activations = {{"M", 1.0}};
+  options.deck.fixedNodeSet = "maxilla";
+  options.run.threads = 1;
+  const sim::ActivationResult glued = sim::SimulateMuscleActivation(mesh, options);
+  options.deck.slidingNodes = sliding;
+  const sim::ActivationResult slid = sim::SimulateMuscleActivation(mesh, options);
+  ASSERT_TRUE(glued.run.converged && slid.run.converged);
+  EXPECT_EQ(slid.deck.fixedNodes, expected.size());
+  EXPECT_EQ(slid.deck.slidingNodes, sliding.size());
+  double moved = 0;
+  for (const auto& s : sliding)
+  {
+    const Point3& u = slid.displacements[static_cast<std::size_t>(s.node)];
+    EXPECT_LT(std::abs(u.z()), 1e-6);
+    moved = std::max(moved, u.head<2>().norm());
+    EXPECT_LT(glued.displacements[static_cast<std::size_t>(s.node)].norm(), 1e-9);
+  }
+  EXPECT_GT(moved, 0.01);
+  EXPECT_LT(slid.muscles[0].length, glued.muscles[0].length); // the free-er block lets the muscle shorten more
 }
 
 // The Hill-type law against its definition: F = a Fmax f_L(λ) + k Fmax (λ − 1), f_L = exp(−(λ−1)²/γ)

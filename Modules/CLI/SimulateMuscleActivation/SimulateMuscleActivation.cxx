@@ -43,7 +43,8 @@ sim::ActivationRequest Request(const cli::Arguments& args)
   r.initialIncrement = args.Double("initialIncrement");
   r.maxIncrements = static_cast<int>(args.Int("maxIncrements"));
   r.lipContact = !args.Bool("noLipContact");
-  r.lipSupport = args.Bool("lipSupport");
+  r.lipSupport = !args.Bool("noLipSupport");
+  r.boneSliding = args.Bool("boneSliding");
   return r;
 }
 
