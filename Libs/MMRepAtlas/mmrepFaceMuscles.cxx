@@ -77,7 +77,9 @@ std::vector<MuscleRule> FaceMuscleRules(const FaceLandmarkSet& lm, const Eigen::
     mid.phi -= 1.0 / (corner.local - c).norm();
     rules.push_back({"OrbicularisOrisMarginalisLower", {{0, start.phi, 0.55}, mid, tip}, true});
   }
-  rules.push_back({"ZygomaticusMajor", {at(lm.eyeOuter, 10, -22, 0.95), at(corner, 8, 2, 0.6)}, false});
+  // Inserts into the skin above the corner (a cutaneous muscle): with its end in the hypodermis at the
+  // modiolus the skin corner followed the muscle's end by less than half (Resources/Atlas/README.md).
+  rules.push_back({"ZygomaticusMajor", {at(lm.eyeOuter, 10, -22, 0.95), at(corner, 4, 2, 0.3)}, false});
   rules.push_back({"Risorius", {at(corner, 40, 0, 0.6), at(corner, 8, 0, 0.55)}, false});
   {
     MuscleControlPoint origin = Between({lm.eyeInner.theta, 0, 0}, {lm.eyeOuter.theta, 0, 0}, 0.5, 0.95);

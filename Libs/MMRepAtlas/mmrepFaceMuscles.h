@@ -16,7 +16,8 @@
 //   OrbicularisOrisMarginalisUpper: midline 1.5 mm above the stomion -> mouth corner, depth 0.55.
 //   OrbicularisOrisMarginalisLower: midline 1.5 mm below the stomion -> mouth corner, depth 0.55.
 //   ZygomaticusMajor: zygomatic bone, 10 mm lateral and 22 mm below the outer eye corner
-//       (near the zygomaticotemporal suture), depth 0.95 -> modiolus, 2 mm above the corner, 0.6.
+//       (near the zygomaticotemporal suture), depth 0.95 -> the skin above the mouth corner, 4 mm
+//       lateral and 2 mm above it, depth 0.3 (inserts into the dermis).
 //   Risorius: parotid fascia 40 mm lateral of the corner at its level, depth 0.6 -> modiolus, 0.55.
 //   LevatorLabiiSuperioris: infraorbital margin below the middle of the orbit, 6 mm under its rim,
 //       depth 0.95 -> upper lip, 45% of the way to the corner, 3 mm above the upper-lip centre, 0.6.

@@ -26,7 +26,7 @@ struct ActivationRequest
   std::array<double, 3> layerScale{1, 1, 1}; // epidermis, dermis, hypodermis
   std::string elementType = "C3D8R";
   double forceScale = 1;
-  double initialIncrement = 0.1; // the module's default (its XML); the library's StepControl keeps 0.5
+  double initialIncrement = 0.05; // the module's default (its XML); the library's StepControl keeps 0.5
   int maxIncrements = 100;
   bool lipContact = true;
   bool lipSupport = true;
