@@ -20,11 +20,6 @@ bool AllIn(const BoundaryFace& face, const std::vector<char>& mask)
       return false;
   return true;
 }
-
-std::vector<char> Mask(const FEMesh& mesh, const std::string& set)
-{
-  return mesh.nodeSets.count(set) ? NodeSetMask(mesh, set) : std::vector<char>(mesh.nodes.size(), 0);
-}
 } // namespace
 
 std::vector<std::int32_t> BoneAnchorNodes(const FEMesh& mesh)
@@ -34,9 +29,9 @@ std::vector<std::int32_t> BoneAnchorNodes(const FEMesh& mesh)
   const std::vector<char> maxilla = NodeSetMask(mesh, kMaxillaSet);
   std::vector<char> anchor(mesh.nodes.size(), 0);
   // The edge of the modelled region: side faces, where the model is cut out of a larger face.
-  const std::vector<char> skin = Mask(mesh, "skin"), symmetry = Mask(mesh, kSymmetryBoundarySet);
-  std::vector<char> deep = Mask(mesh, "skull"), slit = Mask(mesh, "upperLipContact");
-  const std::vector<char> inner = Mask(mesh, "inner"), lower = Mask(mesh, "lowerLipContact");
+  const std::vector<char> skin = NodeSetMask(mesh, "skin"), symmetry = NodeSetMask(mesh, kSymmetryBoundarySet);
+  std::vector<char> deep = NodeSetMask(mesh, "skull"), slit = NodeSetMask(mesh, "upperLipContact");
+  const std::vector<char> inner = NodeSetMask(mesh, "inner"), lower = NodeSetMask(mesh, "lowerLipContact");
   for (std::size_t i = 0; i < deep.size(); ++i)
   {
     deep[i] = deep[i] || inner[i];

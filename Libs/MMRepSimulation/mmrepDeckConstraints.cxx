@@ -100,7 +100,8 @@ void WriteConstraints(const FEMesh& mesh, const DeckOptions& options, const Deck
     if (s.node < 0 || static_cast<std::size_t>(s.node) >= mesh.nodes.size() ||
         !plan.solidNode[static_cast<std::size_t>(s.node)])
       throw std::invalid_argument("sliding node " + std::to_string(s.node) + " is not a node of a solid element");
-    if (isFixed[static_cast<std::size_t>(s.node)] || OnMandibleSide(mesh, plan, s.node))
+    // A bone node slides on its own bone; only the lips' support can move away with the jaw.
+    if (isFixed[static_cast<std::size_t>(s.node)] || (!s.onBone && OnMandibleSide(mesh, plan, s.node)))
       continue;
     addNormal(s.node, s.normal);
     ++summary.slidingNodes;
