@@ -84,6 +84,13 @@ std::array<HyperelasticMaterial, 4> LayerMaterials(double c10Pa, double c20Pa, d
   return materials;
 }
 
+double DefaultInitialIncrement(const std::vector<MuscleActivation>& activations, double jawAngle)
+{
+  const bool musclesAtRest =
+    std::none_of(activations.begin(), activations.end(), [](const MuscleActivation& a) { return a.level > 0; });
+  return jawAngle != 0 && musclesAtRest ? 0.1 : 0.05;
+}
+
 DeckOptions MakeDeckOptions(const FEMesh& mesh, const ActivationRequest& request, const std::string& modelName,
                             Gesture& gesture)
 {
@@ -104,7 +111,8 @@ DeckOptions MakeDeckOptions(const FEMesh& mesh, const ActivationRequest& request
   deck.hexahedronType = request.elementType;
   deck.cables.forceScale = request.forceScale;
   deck.step.maxIncrements = request.maxIncrements;
-  deck.step.initialIncrement = request.initialIncrement;
+  deck.step.initialIncrement =
+    request.initialIncrement > 0 ? request.initialIncrement : DefaultInitialIncrement(deck.activations, jawAngle);
   deck.step.minIncrement = std::min(deck.step.minIncrement, deck.step.initialIncrement);
   deck.jawAngle = jawAngle;
   deck.lipContact = request.lipContact;

@@ -40,7 +40,7 @@ sim::ActivationRequest Request(const cli::Arguments& args)
   r.layerScale = {scale[0], scale[1], scale[2]};
   r.elementType = args.String("elementType");
   r.forceScale = args.Double("forceScale");
-  r.initialIncrement = args.Double("initialIncrement");
+  r.initialIncrement = args.Has("initialIncrement") ? args.Double("initialIncrement") : 0;
   r.maxIncrements = static_cast<int>(args.Int("maxIncrements"));
   r.lipContact = !args.Bool("noLipContact");
   r.lipSupport = !args.Bool("noLipSupport");
