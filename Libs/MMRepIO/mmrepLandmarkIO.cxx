@@ -41,6 +41,42 @@ std::string FormatNumber(double v)
 
 // ---- markups JSON ----------------------------------------------------------------------------
 
+// The markup's "coordinateUnits" (Slicer writes "mm", or "um" for microscopy; the schema also
+// allows one unit per axis): the factor to millimetres. Other units are refused, never ignored.
+double MillimetresPerUnit(const std::string& path, const nlohmann::json& markup)
+{
+  if (!markup.contains("coordinateUnits"))
+    return 1.0;
+  std::vector<std::string> units;
+  const nlohmann::json& u = markup["coordinateUnits"];
+  if (u.is_string())
+    units.push_back(u.get<std::string>());
+  else if (u.is_array())
+    for (const auto& axis : u)
+      units.push_back(axis.is_string() ? axis.get<std::string>() : std::string("?"));
+  else
+    Fail(path, "coordinateUnits is neither a unit nor a list of units");
+  double factor = 0;
+  for (const std::string& unit : units)
+  {
+    double f = 0;
+    if (unit == "mm" || unit.empty())
+      f = 1.0;
+    else if (unit == "um" || unit == "\u00b5m" || unit == "\u03bcm")
+      f = 1e-3;
+    else if (unit == "cm")
+      f = 10.0;
+    else if (unit == "m")
+      f = 1e3;
+    else
+      Fail(path, "unsupported coordinateUnits '" + unit + "' (expected mm, um, cm or m)");
+    if (factor != 0 && f != factor)
+      Fail(path, "coordinateUnits differ between the axes");
+    factor = f;
+  }
+  return factor == 0 ? 1.0 : factor;
+}
+
 std::vector<Landmark> ReadMarkupsJson(const std::string& path, std::istream& in)
 {
   nlohmann::json doc;
@@ -79,24 +115,34 @@ std::vector<Landmark> ReadMarkupsJson(const std::string& path, std::istream& in)
       {
         continue;
       }
+      const double toMillimetres = MillimetresPerUnit(path, markup);
       int index = 0;
       for (const nlohmann::json& cp : markup["controlPoints"])
       {
         ++index;
-        // Points placed as "missing" in Slicer have no position: they are not landmarks.
-        if (cp.value("positionStatus", std::string("defined")) == "missing")
+        const std::string label = cp.value("label", std::string());
+        const std::string which = label.empty() ? std::to_string(index) : "'" + label + "'";
+        // Points placed as "missing" in Slicer have no position: they are not landmarks. A point
+        // "undefined" or still in "preview" has a position that nobody placed: it is refused.
+        const std::string status = cp.value("positionStatus", std::string("defined"));
+        if (status == "missing")
         {
           continue;
         }
+        if (status != "defined")
+        {
+          Fail(path, "control point " + which + " is not placed (positionStatus '" + status +
+                       "'): place it in Slicer, or mark it missing");
+        }
         if (!cp.contains("position") || !cp["position"].is_array() || cp["position"].size() != 3)
         {
-          Fail(path, "control point " + std::to_string(index) + " has no 3-component position");
+          Fail(path, "control point " + which + " has no 3-component position");
         }
         Landmark lm;
-        lm.name = cp.value("label", std::string());
+        lm.name = label;
         const Point3 p(cp["position"][0].get<double>(), cp["position"][1].get<double>(),
                        cp["position"][2].get<double>());
-        lm.position = Convert(p, system, CoordinateSystem::LPS);
+        lm.position = Convert(toMillimetres * p, system, CoordinateSystem::LPS);
         landmarks.push_back(lm);
       }
     }

@@ -8,6 +8,7 @@
 
 #include "mmrepCanonicalVoxelOrder.h"
 #include "mmrepHeadSegmentation.h"
+#include "mmrepNotImaged.h"
 #include "mmrepSurfaceDistanceMap.h"
 #include "mmrepSurfaceExtraction.h"
 #include "mmrepSymmetryPlane.h"
@@ -19,6 +20,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <set>
 #include <sstream>
@@ -65,6 +67,26 @@ ModelAccuracy Measure(const std::string& state, const FEMesh& mesh, vtkPolyData*
     a.controlErrors.push_back(e);
   }
   return a;
+}
+
+// What makes the final model a poor fit, in words ("fitted skull 2.9 mm mean (at most 1.5)"), or empty.
+std::string PoorFit(const ModelAccuracy& a, const std::vector<std::string>& names, const FaceModelOptions& options)
+{
+  std::string why;
+  auto add = [&](const std::string& what, double value, double bound) {
+    if (!(value <= bound)) // NaN is poor too
+    {
+      char text[200];
+      std::snprintf(text, sizeof text, "%s%s %.2f mm (at most %.1f)", why.empty() ? "" : ", ", what.c_str(), value,
+                    bound);
+      why += text;
+    }
+  };
+  add("fitted skin mean", a.skinHalf.mean, options.poorFitSkin);
+  add("fitted skull mean", a.skullHalf.mean, options.poorFitSkull);
+  for (std::size_t i = 0; i < names.size() && i < a.controlErrors.size(); ++i)
+    add("control point '" + names[i] + "'", a.controlErrors[i], options.poorFitControlPoint);
+  return why;
 }
 
 } // namespace
@@ -185,14 +207,47 @@ void CheckInputs(const CTImage* ct, const std::vector<Landmark>& controlPoints, 
     throw std::invalid_argument("atlas: it has no muscle tracks");
 
   result.controlTargets = MatchControlPoints(ct, controlPoints, atlas, result.controlNames);
-  if (options.allowPartialFieldOfView)
-    result.fieldOfViewMissing =
-      MissingFieldOfView(ct, atlas, options.registration.skinSet, result.controlTargets, options.fieldOfViewMargin);
-  else
-    CheckFieldOfView(ct, atlas, options.registration.skinSet, result.controlTargets, options.fieldOfViewMargin);
+  if (!options.trustControlPoints)
+    CheckControlPointConfiguration(atlas, result.controlNames, result.controlTargets, options.controlPointBounds);
+  // What the CT's extent misses; refused with what it did not image once the skin is known (CheckImagedFace).
+  result.fieldOfViewMissing =
+    MissingFieldOfView(ct, atlas, options.registration.skinSet, result.controlTargets, options.fieldOfViewMargin);
   // The maps of R cover at least the face region: a spacing that cannot fit it is refused now.
   if (std::array<double, 6> face; FaceRegionBounds(atlas, options.registration.skinSet, result.controlTargets, face))
     CheckDistanceMapGrid(face, options.registration.mapMargin, options.registration.mapSpacing, "--mapSpacing");
+}
+
+// After the surfaces: the control points on the skin, and the face region inside the CT's extent
+// and imaged (not cut by the reconstruction circle). Refused unless partial models are allowed.
+NotImagedTissue CheckImagedFace(const CTImage* ct, const FEMesh& atlas, const FaceModelOptions& options,
+                                FaceModelResult& result)
+{
+  if (!options.trustControlPoints)
+    CheckControlPointsOnSkin(result.skin, result.controlNames, result.controlTargets, options.controlPointBounds);
+  NotImagedTissue notImaged;
+  std::array<double, 6> face;
+  if (FaceRegionBounds(atlas, options.registration.skinSet, result.controlTargets, face))
+  {
+    for (unsigned a = 0; a < 3; ++a)
+    {
+      face[2 * a] -= options.fieldOfViewMargin;
+      face[2 * a + 1] += options.fieldOfViewMargin;
+    }
+    notImaged = FindNotImagedTissue(ct, result.thresholds.skin, &face);
+    result.notImaged = NotImagedMessage(NotImagedRegions(atlas, result.controlTargets, notImaged), notImaged);
+  }
+  if (options.allowPartialFieldOfView || (result.notImaged.empty() && result.fieldOfViewMissing.empty()))
+    return notImaged;
+  std::string why = result.notImaged;
+  if (!result.fieldOfViewMissing.empty())
+  {
+    char margin[120];
+    std::snprintf(margin, sizeof margin, " (the face region, placed by the control points, needs a %.0f mm margin)",
+                  options.fieldOfViewMargin);
+    why += (why.empty() ? "the CT does not cover the face: it misses the " : "; the CT also misses the ") +
+           result.fieldOfViewMissing + margin;
+  }
+  throw std::runtime_error(why + "; --allowPartialFieldOfView builds a partial model");
 }
 
 } // namespace
@@ -223,6 +278,7 @@ FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& c
   result.thresholds = surfaces.thresholds;
   result.skin = surfaces.skin;
   result.skull = surfaces.skull;
+  const NotImagedTissue notImaged = CheckImagedFace(ct, atlas, options, result);
   finish("surfaces", t);
 
   // 2. Symmetry plane.
@@ -298,9 +354,15 @@ FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& c
   t = Clock::now();
   result.muscles = InferMuscles(
     atlas, [&](const Point3& x) { return result.AtlasToSubject(x); }, result.model);
+  if (const auto cut = NodesOnNotImagedSkin(result.model, options.registration.skinSet, notImaged, 3.0); !cut.empty())
+  {
+    result.model.nodeSets["notImaged"] = cut;
+    result.notImagedNodes = cut.size();
+  }
   result.accuracy.push_back(Measure("repaired", result.model, result.skin, result.skull, result.controlNames,
                                     result.controlTargets, options.registration, fittedHalf));
   finish("muscles", t);
+  result.poorFit = PoorFit(result.accuracy.back(), result.controlNames, options);
   result.totalSeconds = Since(t0);
   return result;
 }

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "mmrepAtlasRegistration.h"
+#include "mmrepControlPointPlausibility.h"
 #include "mmrepCTThresholds.h"
 #include "mmrepMeshQuality.h"
 #include "mmrepMeshRepair.h"
@@ -44,7 +45,16 @@ struct FaceModelOptions
   // A CT that misses part of the face region is refused unless this is set: the model is then built
   // all the same, with the missing part in FaceModelResult::fieldOfViewMissing (its shape there is
   // the atlas's, pulled towards whatever skin the CT holds).
+  // A CT whose head reaches the scanner's reconstruction circle (mmrepNotImaged.h) likewise: the
+  // model's skin nodes on the cut go into node set `notImaged`, the regions into notImagedRegions.
   bool allowPartialFieldOfView = false;
+  // Control points that contradict the anatomy (mmrepControlPointPlausibility.h) are refused before
+  // the registration unless the user vouches for them.
+  ControlPointBounds controlPointBounds;
+  bool trustControlPoints = false;
+  // A model whose own accuracy (fitted half, after the repair) exceeds these is a poor fit
+  // (FaceModelResult::poorFit): the module then publishes nothing unless told to.
+  double poorFitSkin = 1.0, poorFitSkull = 1.5, poorFitControlPoint = 2.0; // mm
   // (stage name, fraction of the whole pipeline done)
   std::function<void(const std::string&, double)> progress;
 };
@@ -80,6 +90,9 @@ struct FaceModelResult
   std::vector<std::string> controlNames; // atlas landmark names = subject control points
   std::vector<Point3> controlTargets;    // the subject's control points, same order
   std::string fieldOfViewMissing;        // the part of the face the CT misses (partial model), or empty
+  std::string notImaged;                 // "the nose tip is outside the scanner's field of view ...", or empty
+  std::size_t notImagedNodes = 0;        // skin nodes of the model on the cut (node set `notImaged`)
+  std::string poorFit;                   // "fitted skull 2.9 mm mean (at most 1.5)", or empty for a good fit
   std::vector<ModelAccuracy> accuracy;   // after R, after Q∘R, after repair
   // Which part of the atlas was fitted to the speaker: "left half" (half-face: the right half is its
   // mirror image), "both halves, averaged" or "whole face (asymmetric)".
@@ -115,9 +128,10 @@ std::vector<Point3> MatchControlPoints(const CTImage* ct, const std::vector<Land
 vtkSmartPointer<vtkPolyData> CropSurfaceAround(vtkPolyData* surface, const FEMesh& mesh, double margin);
 inline constexpr double kRepairSurfaceMargin = 20.0; // mm, the margin BuildFaceModel crops with
 
-// Throws std::invalid_argument for inputs that cannot work (control points missing, unnamed or
-// outside the CT volume, an atlas without the sets or landmarks), std::runtime_error when a stage
-// fails (no head in the CT, surfaces not overlapping the atlas). A repair that cannot reach the
+// Throws std::invalid_argument for inputs that cannot work (control points missing, unnamed,
+// outside the CT volume, off the skin or contradicting the atlas's face, an atlas without the sets
+// or landmarks), std::runtime_error when a stage fails (no head in the CT, a face the CT does not
+// cover or did not image, surfaces not overlapping the atlas). A repair that cannot reach the
 // threshold does not throw: result.repair.success says so and the caller decides.
 FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& controlPoints, const FEMesh& atlas,
                                const FaceModelOptions& options = {});

@@ -59,7 +59,11 @@ std::string FaceModelReportJson(const FaceModelResult& r, const FaceModelReportI
 {
   json j;
   j["inputs"] = {{"ct", in.ct}, {"controlPoints", in.controlPoints}, {"atlas", in.atlas}};
-  j["fieldOfView"] = {{"complete", r.fieldOfViewMissing.empty()}, {"missing", r.fieldOfViewMissing}};
+  j["fieldOfView"] = {{"complete", r.fieldOfViewMissing.empty() && r.notImaged.empty()},
+                      {"missing", r.fieldOfViewMissing},
+                      {"notImaged", r.notImaged},
+                      {"notImagedNodes", r.notImagedNodes}};
+  j["fit"] = {{"poor", !r.poorFit.empty()}, {"why", r.poorFit}};
   j["thresholds"] = {{"skin", r.thresholds.skin}, {"bone", r.thresholds.bone}, {"source", r.thresholds.source}};
   j["surfaces"] = {{"skinVertices", r.skin->GetNumberOfPoints()},
                    {"skinTriangles", r.skin->GetNumberOfPolys()},
@@ -133,6 +137,11 @@ std::string FaceModelReportMarkdown(const FaceModelResult& r, const FaceModelRep
   if (!r.fieldOfViewMissing.empty())
     md << "**Partial model**: the CT misses the " << r.fieldOfViewMissing
        << " of the face region; there the model is not fitted to the speaker.\n\n";
+  if (!r.notImaged.empty())
+    md << "**Partial model**: " << r.notImaged << "; its " << r.notImagedNodes
+       << " skin nodes there are in node set `notImaged`.\n\n";
+  if (!r.poorFit.empty())
+    md << "**Poor fit** (accepted by the user): " << r.poorFit << ".\n\n";
 
   md << "## Surface accuracy (mm)\n\n"
      << "Fitted: **" << r.fitted

@@ -2,11 +2,14 @@
 // Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepFieldOfView.h"
 
+#include "mmrepControlPointPlausibility.h"
+#include "mmrepPlane.h"
 #include "mmrepSimilarityTransform.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <stdexcept>
 
 namespace mmrep
@@ -113,17 +116,116 @@ std::string MissingFieldOfView(const CTImage* ct, const FEMesh& atlas, const std
   return missing;
 }
 
-void CheckFieldOfView(const CTImage* ct, const FEMesh& atlas, const std::string& faceSet,
-                      const std::vector<Point3>& targets, double margin)
+namespace
 {
-  if (const std::string missing = MissingFieldOfView(ct, atlas, faceSet, targets, margin); !missing.empty())
+// The atlas's face, in its own frame: levels (superior coordinate) of the eyes and lips, the mouth
+// corner's distance from the midline.
+struct AtlasFaceLevels
+{
+  Eigen::Vector3d left, superior;
+  Eigen::Vector3d origin;
+  double eyes = 0, upperLip = 0, lowerLip = 0, mouthHalfWidth = 0;
+};
+
+bool FaceLevels(const FEMesh& atlas, AtlasFaceLevels& f)
+{
+  Eigen::Vector3d anterior;
+  if (!AtlasFaceFrame(atlas, anterior, f.superior))
+    return false;
+  const Plane plane = FitPlaneToNodeSet(atlas, "midsagittal");
+  f.left = plane.normal;
+  f.origin = plane.point;
+  int eyes = 0;
+  bool upper = false, lower = false;
+  for (const auto& l : atlas.landmarks)
   {
-    char text[120];
-    std::snprintf(text, sizeof text, " (the face region, placed by the control points, needs a %.0f mm margin)",
-                  margin);
-    throw std::runtime_error("the CT does not cover the face: it misses the " + missing + text +
-                             "; --allowPartialFieldOfView builds a partial model");
+    const double level = f.superior.dot(l.position - f.origin);
+    if (l.name.find("Eye") != std::string::npos)
+      f.eyes += level, ++eyes;
+    else if (l.name == "UpperLipCenter")
+      f.upperLip = level, upper = true;
+    else if (l.name == "LowerLipCenter")
+      f.lowerLip = level, lower = true;
+    else if (l.name.find("LipCorner") != std::string::npos)
+      f.mouthHalfWidth = std::abs(f.left.dot(l.position - f.origin));
   }
+  f.eyes /= std::max(1, eyes);
+  return eyes > 0 && upper && lower && f.mouthHalfWidth > 0;
+}
+
+std::string RegionOf(const AtlasFaceLevels& f, const Eigen::Vector3d& atlasPoint)
+{
+  const double lateral = f.left.dot(atlasPoint - f.origin), level = f.superior.dot(atlasPoint - f.origin);
+  const std::string side = lateral > 0 ? "left" : "right";
+  const double noseSpan = f.eyes - f.upperLip; // eye level to the upper lip
+  if (level > f.eyes + 12)
+    return "forehead";
+  if (std::abs(lateral) <= 18 && level > f.upperLip + 4)
+    return level < f.eyes - 0.45 * noseSpan ? "nose tip" : "nose bridge";
+  if (std::abs(level - f.eyes) <= 12)
+    return side + " eye";
+  if (level >= f.lowerLip - 6 && level <= f.upperLip + 4 && std::abs(lateral) <= 1.3 * f.mouthHalfWidth)
+    return "lips";
+  if (level < f.lowerLip - 6 && std::abs(lateral) <= 30)
+    return "chin";
+  return side + " cheek";
+}
+} // namespace
+
+std::string NotImagedRegions(const FEMesh& atlas, const std::vector<Point3>& targets, const NotImagedTissue& notImaged)
+{
+  SimilarityTransform toCT;
+  AtlasFaceLevels face;
+  if (notImaged.cut.empty() || !PlaceAtlas(atlas, targets, toCT) || !FaceLevels(atlas, face))
+    return {};
+  const SimilarityTransform toAtlas = toCT.Inverse();
+  std::map<std::string, std::size_t> count;
+  for (const auto& p : notImaged.cut)
+    ++count[RegionOf(face, toAtlas.Apply(p))];
+  std::vector<std::pair<std::size_t, std::string>> regions;
+  for (const auto& [name, n] : count)
+    if (5 * n >= notImaged.cut.size())
+      regions.emplace_back(n, name);
+  std::sort(regions.begin(), regions.end(),
+            [](const auto& a, const auto& b) { return a.first != b.first ? a.first > b.first : a.second < b.second; });
+  std::string words;
+  for (std::size_t i = 0; i < regions.size(); ++i)
+    words += (i == 0 ? "the " : i + 1 == regions.size() ? " and the " : ", the ") + regions[i].second;
+  return words;
+}
+
+std::string NotImagedMessage(const std::string& regions, const NotImagedTissue& notImaged)
+{
+  if (regions.empty())
+    return {};
+  const bool several = regions.find(" and ") != std::string::npos;
+  char cut[160];
+  std::snprintf(cut, sizeof cut, " (the skin there is a flat cut: %zu voxels touch the padding value %d)",
+                notImaged.cut.size(), static_cast<int>(notImaged.paddingValue));
+  return regions + (several ? " are" : " is") + " outside the scanner's field of view" + cut + ": the model's " +
+         regions.substr(4) + " there " + (several ? "are" : "is") + " the atlas's";
+}
+
+std::vector<std::int32_t> NodesOnNotImagedSkin(const FEMesh& mesh, const std::string& skinSet,
+                                               const NotImagedTissue& notImaged, double radius)
+{
+  std::vector<std::int32_t> nodes;
+  const auto set = mesh.nodeSets.find(skinSet);
+  if (set == mesh.nodeSets.end() || notImaged.cut.empty())
+    return nodes;
+  const double r2 = radius * radius;
+  for (const auto id : set->second)
+  {
+    const Point3& x = mesh.nodes.at(static_cast<std::size_t>(id));
+    for (const auto& c : notImaged.cut)
+      if ((x - c).squaredNorm() <= r2)
+      {
+        nodes.push_back(id);
+        break;
+      }
+  }
+  std::sort(nodes.begin(), nodes.end());
+  return nodes;
 }
 
 } // namespace mmrep

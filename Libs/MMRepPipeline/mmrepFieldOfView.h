@@ -6,6 +6,7 @@
 
 #include "mmrepFEMesh.h"
 #include "mmrepImageIO.h"
+#include "mmrepNotImaged.h"
 
 #include <array>
 #include <string>
@@ -25,11 +26,19 @@ std::string MissingFieldOfView(const CTImage* ct, const FEMesh& atlas, const std
 bool FaceRegionBounds(const FEMesh& atlas, const std::string& faceSet, const std::vector<Point3>& targets,
                       std::array<double, 6>& box);
 
-// Maps the atlas's face region (the nodes of `faceSet`: brow to chin, both cheeks) into the CT by
-// the similarity taking the atlas landmarks to `targets` (the control points, in the atlas
-// landmarks' order) and throws std::runtime_error unless the CT's extent holds all of them with
-// `margin` mm to spare, naming each side that is missing and by how many mm.
-void CheckFieldOfView(const CTImage* ct, const FEMesh& atlas, const std::string& faceSet,
-                      const std::vector<Point3>& targets, double margin);
+// The face regions the not-imaged cut lies in, in words ("the nose tip", "the nose tip and the
+// left cheek": each region holding at least a fifth of the cut), from where the control points
+// place the atlas's face: eye, nose, lips and chin levels, the midline and the mouth corners.
+// Empty when there is no cut or the control points place nothing.
+std::string NotImagedRegions(const FEMesh& atlas, const std::vector<Point3>& targets, const NotImagedTissue& notImaged);
+
+// The sentence a user reads: "the nose tip is outside the scanner's field of view (the skin there
+// is a flat cut: 412 voxels touch the padding value -1024): the model's nose tip there is the
+// atlas's". Empty when `regions` is.
+std::string NotImagedMessage(const std::string& regions, const NotImagedTissue& notImaged);
+
+// The nodes of `mesh`'s `skinSet` within `radius` mm of the cut, in ascending order.
+std::vector<std::int32_t> NodesOnNotImagedSkin(const FEMesh& mesh, const std::string& skinSet,
+                                               const NotImagedTissue& notImaged, double radius);
 
 } // namespace mmrep

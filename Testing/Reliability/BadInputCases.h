@@ -9,7 +9,13 @@
 //   10^11 points; {dicomjunk} a folder holding junk files only; {cropped} the CT cut below the lips;
 //   {truncnrrd} {truncmha} {truncnii} {truncniigz} headsq cut to half its length in each format;
 //   {badtype} a MetaImage of an unknown ElementType; {nanatlas} the atlas with a NaN landmark;
-//   {truncvtp} the atlas skin cut to half its length; {noxyz} a PLY declaring no y and z.
+//   {truncvtp} the atlas skin cut to half its length; {noxyz} a PLY declaring no y and z;
+//   {shifted} {sideways} {swapped} {scaled} {undefined} cthead's control points 15 mm in front of the
+//   face, 15 mm to the side, with
+//   the lips swapped, 1.8 times too far apart, one not placed; {turnedct} {turnedpoints} cthead
+//   turned 90 degrees about the vertical axis by its header, its points turned with it;
+//   {upsidedownct} cthead upside down by its header; {vhf} {vhfpoints} the Visible Human Female CT
+//   (its nose tip outside the reconstruction circle) and its control points.
 // `earlier` names outputs of an earlier run made before the case ("x/" a folder with a file in it):
 // they, like the inputs, must be byte-identical afterwards and nothing may be added.
 #pragma once
@@ -513,6 +519,52 @@ inline std::vector<BadInputCase> BadInputCases()
      "nanatlas.vtu: landmark 'LeftEyeOuterCorner'",
      {"speaker/"}},
 
+    // Control points that contradict the anatomy: refused before the registration, naming the point.
+    {"ControlPoints_FaceModelPipeline_offTheSkin",
+     "FaceModelPipeline",
+     {"{ct}", "{shifted}", "--outputDirectory", "{d}/speaker", "--noPictures"},
+     1,
+     "mm from the skin",
+     {"speaker/"}},
+    {"ControlPoints_FaceModelPipeline_lipsSwapped",
+     "FaceModelPipeline",
+     {"{ct}", "{swapped}", "--outputDirectory", "{d}/speaker", "--noPictures"},
+     1,
+     "mm from where the other points place it"},
+    {"ControlPoints_FaceModelPipeline_faceTooLarge",
+     "FaceModelPipeline",
+     {"{ct}", "{scaled}", "--outputDirectory", "{d}/speaker", "--noPictures"},
+     1,
+     "span 1.8 times the atlas's face (check coordinateUnits"},
+    {"ControlPoints_FaceModelPipeline_notPlaced",
+     "FaceModelPipeline",
+     {"{ct}", "{undefined}", "--outputDirectory", "{d}/speaker", "--noPictures"},
+     1,
+     "control point 'LeftLipCorner' is not placed (positionStatus 'undefined')"},
+    {"ControlPoints_FaceModelPipeline_sidewaysTrustedIsAPoorFit",
+     "FaceModelPipeline",
+     {"{ct}", "{sideways}", "--outputDirectory", "{d}/speaker", "--noPictures", "--trustControlPoints"},
+     1,
+     "poor fit: ",
+     {"speaker/"}},
+    // A wrong orientation header: the face looking sideways, or the head upside down.
+    {"Orientation_FaceModelPipeline_turnedHead",
+     "FaceModelPipeline",
+     {"{turnedct}", "{turnedpoints}", "--outputDirectory", "{d}/speaker", "--noPictures"},
+     1,
+     "the CT's orientation header looks wrong: the control points have the face looking to the patient's left"},
+    {"Orientation_FaceModelPipeline_upsideDownCT",
+     "FaceModelPipeline",
+     {"{upsidedownct}", "{points}", "--outputDirectory", "{d}/speaker", "--noPictures"},
+     1,
+     "mm from the skin"},
+
+    // Field of view: the nose tip outside the reconstruction circle is named, not a box side.
+    {"FieldOfView_FaceModelPipeline_noseTipNotImaged",
+     "FaceModelPipeline",
+     {"{vhf}", "{vhfpoints}", "--outputDirectory", "{d}/speaker", "--noPictures"},
+     1,
+     "the nose tip is outside the scanner's field of view"},
     // Field of view: a CT cut below the lips has no chin; an earlier result stays as it was.
     {"FieldOfView_FaceModelPipeline_noChin",
      "FaceModelPipeline",

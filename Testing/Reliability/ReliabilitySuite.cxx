@@ -6,11 +6,13 @@
 #include "BadInputCases.h"
 #include "mmrepFEMeshIO.h"
 #include "mmrepImageIO.h"
+#include "mmrepLandmarkIO.h"
 #include "mmrepModuleRunner.h"
 
 #include <itkRegionOfInterestImageFilter.h>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 #include <cmath>
@@ -34,6 +36,75 @@ void WriteFile(const fs::path& path, const std::string& bytes)
   std::ofstream f(path, std::ios::binary);
   f << bytes;
   ASSERT_TRUE(f.good()) << path;
+}
+
+// Control points that contradict the anatomy: all five 15 mm in front of the face (in the air) or
+// 15 mm to the side, the lips swapped, the face 1.8 times too large, one point not placed (positionStatus "undefined").
+void WriteWrongControlPoints(const fs::path& d)
+{
+  const auto points = mmrep::ReadLandmarks(kSampleData + "cthead.ControlPoints.mrk.json");
+  auto shifted = points, sideways = points, swapped = points, scaled = points;
+  mmrep::Point3 centre = mmrep::Point3::Zero();
+  for (const auto& p : points)
+    centre += p.position / static_cast<double>(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    shifted[i].position.y() -= 15.0;  // LPS: -y is anterior
+    sideways[i].position.x() += 15.0; // to the patient's left, along the face
+    scaled[i].position = centre + 1.8 * (points[i].position - centre);
+    if (points[i].name == "UpperLipCenter")
+      swapped[i].name = "LowerLipCenter";
+    else if (points[i].name == "LowerLipCenter")
+      swapped[i].name = "UpperLipCenter";
+  }
+  mmrep::WriteLandmarks(shifted, (d / "shifted.mrk.json").string());
+  mmrep::WriteLandmarks(sideways, (d / "sideways.mrk.json").string());
+  mmrep::WriteLandmarks(swapped, (d / "swapped.mrk.json").string());
+  mmrep::WriteLandmarks(scaled, (d / "scaled.mrk.json").string());
+  auto json = nlohmann::json::parse(Slurp(kSampleData + "cthead.ControlPoints.mrk.json"));
+  json["markups"][0]["controlPoints"][2]["positionStatus"] = "undefined";
+  WriteFile(d / "undefined.mrk.json", json.dump(4));
+}
+
+// The bundled CT with a wrong orientation header, as scanners and converters write them: turned 90
+// degrees about the vertical axis (its control points turned with it: the face then looks to the
+// patient's left), and upside down (rotated 180 degrees about the left axis, with the control
+// points of the upright head). Both rotate about the volume's centre, so the extent stays put.
+void WriteReorientedHeads(const fs::path& d)
+{
+  auto rotated = [&](const Eigen::Matrix3d& r, const std::string& name) {
+    auto ct = mmrep::ReadCTImage(kSampleData + "cthead.nrrd");
+    const auto size = ct->GetLargestPossibleRegion().GetSize();
+    itk::ContinuousIndex<double, 3> middle;
+    for (unsigned a = 0; a < 3; ++a)
+      middle[a] = 0.5 * (static_cast<double>(size[a]) - 1.0);
+    mmrep::CTImage::PointType c;
+    ct->TransformContinuousIndexToPhysicalPoint(middle, c);
+    const Eigen::Vector3d centre(c[0], c[1], c[2]);
+    auto move = [&](const Eigen::Vector3d& p) -> Eigen::Vector3d { return centre + r * (p - centre); };
+    Eigen::Matrix3d direction;
+    for (unsigned i = 0; i < 3; ++i)
+      for (unsigned j = 0; j < 3; ++j)
+        direction(i, j) = ct->GetDirection()[i][j];
+    direction = r * direction;
+    mmrep::CTImage::DirectionType itkDirection;
+    for (unsigned i = 0; i < 3; ++i)
+      for (unsigned j = 0; j < 3; ++j)
+        itkDirection[i][j] = direction(i, j);
+    const Eigen::Vector3d origin = move({ct->GetOrigin()[0], ct->GetOrigin()[1], ct->GetOrigin()[2]});
+    ct->SetDirection(itkDirection);
+    ct->SetOrigin(origin.data());
+    mmrep::WriteImage(ct.GetPointer(), (d / (name + ".nrrd")).string());
+    auto points = mmrep::ReadLandmarks(kSampleData + "cthead.ControlPoints.mrk.json");
+    for (auto& p : points)
+      p.position = move(p.position);
+    mmrep::WriteLandmarks(points, (d / (name + ".mrk.json")).string());
+  };
+  Eigen::Matrix3d turn, upsideDown;
+  turn << 0, -1, 0, 1, 0, 0, 0, 0, 1;        // about +z (superior) by 90 degrees
+  upsideDown << 1, 0, 0, 0, -1, 0, 0, 0, -1; // about +x (left) by 180 degrees
+  rotated(turn, "turned");
+  rotated(upsideDown, "upsidedown");
 }
 
 // The generated fixtures, made once per test program.
@@ -132,6 +203,8 @@ const fs::path& Fixtures()
     fs::copy(kAtlasData + "FaceAtlasSkin.vtp", d / "truncated.vtp");
     fs::resize_file(d / "truncated.vtp", fs::file_size(d / "truncated.vtp") / 2);
     WriteFile(d / "noxyz.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n2\n3\n");
+    WriteWrongControlPoints(d);
+    WriteReorientedHeads(d);
     return d;
   }();
   struct RemoveAtExit
@@ -171,6 +244,16 @@ const std::map<std::string, fs::path>& Placeholders()
     {"{nanatlas}", Fixtures() / "nanatlas.vtu"},
     {"{truncvtp}", Fixtures() / "truncated.vtp"},
     {"{noxyz}", Fixtures() / "noxyz.ply"},
+    {"{shifted}", Fixtures() / "shifted.mrk.json"},
+    {"{sideways}", Fixtures() / "sideways.mrk.json"},
+    {"{swapped}", Fixtures() / "swapped.mrk.json"},
+    {"{scaled}", Fixtures() / "scaled.mrk.json"},
+    {"{undefined}", Fixtures() / "undefined.mrk.json"},
+    {"{turnedct}", Fixtures() / "turned.nrrd"},
+    {"{turnedpoints}", Fixtures() / "turned.mrk.json"},
+    {"{upsidedownct}", Fixtures() / "upsidedown.nrrd"},
+    {"{vhf}", kSampleData + "vhf_head_ct.nrrd"},
+    {"{vhfpoints}", kSampleData + "vhf_head_ct.ControlPoints.mrk.json"},
   };
   return p;
 }
@@ -266,6 +349,16 @@ TEST_P(BadInput, OneLineNothingTouchedNothingLeft)
   EXPECT_EQ(Differences(before, Snapshot(dir)), "") << lines[0];
 }
 
+// A module command line run with its stdout dropped and its stderr kept in `err`.
+ModuleRun RunCommand(const std::string& command, const fs::path& err)
+{
+  const int status = std::system((command + " > /dev/null 2> " + Quote(err.string())).c_str());
+  ModuleRun run;
+  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.err = Slurp(err);
+  return run;
+}
+
 // The explicit way past the field-of-view refusal: the CT without the chin gives a partial model,
 // with the missing part (as the refusal names it) in report.json and report.md and one warning line.
 TEST(PartialFieldOfView, ModelBuiltMissingRegionReported)
@@ -284,12 +377,8 @@ TEST(PartialFieldOfView, ModelBuiltMissingRegionReported)
   ASSERT_TRUE(std::regex_search(refusal, chin, std::regex(R"(chin by \d+ mm)"))) << refusal;
   EXPECT_FALSE(fs::exists(dir / "refused"));
 
-  const int status = std::system((common + Quote((dir / "speaker").string()) +
-                                  " --allowPartialFieldOfView > /dev/null 2> " + Quote((dir / "err").string()))
-                                   .c_str());
-  ModuleRun run;
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.err = Slurp(dir / "err");
+  const ModuleRun run =
+    RunCommand(common + Quote((dir / "speaker").string()) + " --allowPartialFieldOfView", dir / "err");
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const auto lines = run.ErrLines();
   ASSERT_EQ(lines.size(), 1u) << run.err;
@@ -303,6 +392,50 @@ TEST(PartialFieldOfView, ModelBuiltMissingRegionReported)
   // A real model: the atlas's mesh, read back.
   const auto model = mmrep::ReadFEMesh((dir / "speaker" / "model.vtu").string());
   EXPECT_EQ(model.elements.size(), mmrep::ReadFEMesh(kAtlasData + "FaceAtlas.vtu").elements.size());
+}
+
+// The Visible Human Female CT, whose nose tip lies outside the reconstruction circle, as a partial
+// model: the warning names the nose tip, the report says so, and every node of set `notImaged` lies
+// at the flat cut: within 4 mm in front of it the CT holds the padding value.
+TEST(PartialFieldOfView, NoseTipNotImagedIsFlaggedOnTheModel)
+{
+  ScratchDirectory scratch("partial-vhf");
+  const fs::path dir = scratch.path();
+  const ModuleRun run = RunCommand(
+    Quote(std::string(MMREP_BINARY_DIR) + "/bin/FaceModelPipeline") + " " + Quote(kSampleData + "vhf_head_ct.nrrd") +
+      " " + Quote(kSampleData + "vhf_head_ct.ControlPoints.mrk.json") +
+      " --noPictures --allowPartialFieldOfView --outputDirectory " + Quote((dir / "speaker").string()),
+    dir / "err");
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const auto lines = run.ErrLines();
+  ASSERT_EQ(lines.size(), 1u) << run.err;
+  EXPECT_NE(lines[0].find("warning: partial model: "), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find("the nose tip is outside the scanner's field of view"), std::string::npos) << lines[0];
+  const auto report = nlohmann::json::parse(Slurp(dir / "speaker" / "report.json"));
+  EXPECT_FALSE(report["fieldOfView"]["complete"].get<bool>());
+  EXPECT_NE(report["fieldOfView"]["notImaged"].get<std::string>().find("the nose tip"), std::string::npos);
+  const auto model = mmrep::ReadFEMesh((dir / "speaker" / "model.vtu").string());
+  ASSERT_TRUE(model.nodeSets.count("notImaged"));
+  const auto& cut = model.nodeSets.at("notImaged");
+  EXPECT_EQ(report["fieldOfView"]["notImagedNodes"].get<std::size_t>(), cut.size());
+  ASSERT_GE(cut.size(), 1u);
+  const auto ct = mmrep::ReadCTImage(kSampleData + "vhf_head_ct.nrrd");
+  for (const auto id : cut)
+  {
+    const mmrep::Point3& x = model.nodes.at(static_cast<std::size_t>(id));
+    bool padded = false;
+    for (double ahead = 1.0; ahead <= 4.0; ahead += 0.5)
+    {
+      mmrep::CTImage::PointType front;
+      front[0] = x.x();
+      front[1] = x.y() - ahead; // LPS: -y is anterior
+      front[2] = x.z();
+      mmrep::CTImage::IndexType index;
+      ASSERT_TRUE(ct->TransformPhysicalPointToIndex(front, index));
+      padded = padded || ct->GetPixel(index) == -1024;
+    }
+    EXPECT_TRUE(padded) << "node " << id << " at " << x.transpose() << ": no padding within 4 mm in front";
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, BadInput, ::testing::ValuesIn(BadInputCases()),

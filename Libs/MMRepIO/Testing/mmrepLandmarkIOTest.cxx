@@ -156,6 +156,56 @@ TEST(LandmarkIO, ReadsSlicerRasJsonAndSkipsMissingPoints)
   EXPECT_DOUBLE_EQ(lms[1].position.y(), -2.0);
 }
 
+// coordinateUnits are honoured (Slicer's "um" for microscopy): a file in micrometres gives the
+// same millimetres; a unit we do not know, and a point nobody placed, are refused naming them.
+TEST(LandmarkIO, HonoursCoordinateUnitsAndRefusesUnplacedPoints)
+{
+  const fs::path dir = mmrep::test::ScratchDir();
+  auto write = [&](const std::string& name, const std::string& units, const std::string& status) {
+    const std::string path = (dir / name).string();
+    std::ofstream(path) << R"({"markups": [{"type": "Fiducial", "coordinateSystem": "LPS", )" << units
+                        << R"("controlPoints": [
+      {"id": "1", "label": "A", "position": [120350.0, -49000.5, 1500.0], "positionStatus": "defined"},
+      {"id": "2", "label": "LeftLipCorner", "position": [1.0, 2.0, 3.0], "positionStatus": ")"
+                        << status << R"("}]}]})";
+    return path;
+  };
+  const auto um = mmrep::ReadLandmarks(write("um.mrk.json", R"("coordinateUnits": "um", )", "defined"));
+  ASSERT_EQ(um.size(), 2u);
+  EXPECT_DOUBLE_EQ(um[0].position.x(), 120.35);
+  EXPECT_DOUBLE_EQ(um[0].position.y(), -49.0005);
+  EXPECT_DOUBLE_EQ(um[0].position.z(), 1.5);
+  const auto perAxis =
+    mmrep::ReadLandmarks(write("axes.mrk.json", R"("coordinateUnits": ["m", "m", "m"], )", "defined"));
+  EXPECT_DOUBLE_EQ(perAxis[1].position.z(), 3000.0);
+  const auto mm = mmrep::ReadLandmarks(write("mm.mrk.json", R"("coordinateUnits": "mm", )", "defined"));
+  EXPECT_DOUBLE_EQ(mm[0].position.x(), 120350.0);
+
+  auto refusal = [](const std::string& path) {
+    try
+    {
+      mmrep::ReadLandmarks(path);
+    }
+    catch (const std::runtime_error& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(refusal(write("ft.mrk.json", R"("coordinateUnits": "ft", )", "defined")).find("coordinateUnits 'ft'"),
+            std::string::npos);
+  EXPECT_NE(refusal(write("mixed.mrk.json", R"("coordinateUnits": ["mm", "um", "mm"], )", "defined"))
+              .find("coordinateUnits differ"),
+            std::string::npos);
+  for (const char* status : {"undefined", "preview"})
+  {
+    const std::string why = refusal(write(std::string(status) + ".mrk.json", "", status));
+    EXPECT_NE(why.find("control point 'LeftLipCorner' is not placed (positionStatus '" + std::string(status) + "')"),
+              std::string::npos)
+      << why;
+  }
+}
+
 TEST(LandmarkIO, ReadsLegacyNumericFcsvCoordinateSystems)
 {
   const fs::path dir = mmrep::test::ScratchDir();

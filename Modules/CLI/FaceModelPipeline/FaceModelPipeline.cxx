@@ -66,6 +66,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
   options.refinement.spacing = args.Double("lipsSpacing");
   options.repairThreshold = qualityThreshold;
   options.allowPartialFieldOfView = args.Bool("allowPartialFieldOfView");
+  options.trustControlPoints = args.Bool("trustControlPoints");
   std::string lastStage;
   options.progress = [&](const std::string& stage, double f) {
     if (stage != lastStage)
@@ -77,9 +78,20 @@ void Run(mmrep::cli::ModuleContext& ctx)
     ctx.progress.ReportRange(0.05, 0.85, f);
   };
   const auto result = mmrep::BuildFaceModel(ct, controlPoints, atlas, options);
-  if (!result.fieldOfViewMissing.empty())
-    std::cerr << ctx.moduleName << ": warning: partial model: the CT misses the " << result.fieldOfViewMissing
-              << " of the face region; there the model is not fitted to the speaker (report.md)" << std::endl;
+  if (!result.fieldOfViewMissing.empty() || !result.notImaged.empty())
+  {
+    std::string what;
+    if (!result.fieldOfViewMissing.empty())
+      what = "the CT misses the " + result.fieldOfViewMissing + " of the face region";
+    if (!result.notImaged.empty())
+      what += (what.empty() ? "" : "; ") + result.notImaged + " (" + std::to_string(result.notImagedNodes) +
+              " skin nodes in node set notImaged)";
+    std::cerr << ctx.moduleName << ": warning: partial model: " << what
+              << "; there the model is not fitted to the speaker (report.md)" << std::endl;
+  }
+  const bool acceptPoorFit = args.Bool("acceptPoorFit");
+  if (!result.poorFit.empty() && acceptPoorFit)
+    std::cerr << ctx.moduleName << ": warning: poor fit accepted: " << result.poorFit << " (report.md)" << std::endl;
 
   std::cout << "Scaled Jacobian after Q∘R: min " << result.qualityAfterQ.min << ", " << result.qualityAfterQ.inverted
             << " inverted, " << result.qualityAfterQ.belowThreshold << " below " << qualityThreshold
@@ -100,6 +112,10 @@ void Run(mmrep::cli::ModuleContext& ctx)
   // A model below the quality threshold fails the run and publishes nothing (an earlier result stays as it was).
   if (!result.repair.success)
     throw ModuleError(mmrep::RepairFailureMessage(result, qualityThreshold, out.FinalPath()));
+  // So does a model whose own report shows it does not fit the speaker, unless the user accepts it.
+  if (!result.poorFit.empty() && !acceptPoorFit)
+    throw ModuleError("poor fit: " + result.poorFit + "; nothing written to " + out.FinalPath().string() +
+                      " (check the control points and the CT, or --acceptPoorFit to keep the model)");
 
   const auto& a = result.accuracy.back();
   std::cout << mmrep::FaceModelSummary(result) << "\n"

@@ -231,7 +231,8 @@ TEST(FaceModelPipelineModule, BadInputFailsCleanly)
   ExpectCleanFailure(RunModuleExecutable("FaceModelPipeline", {kCT, dir / "far.mrk.json", "--outputDirectory",
                                                                out.string(), "--noPictures"}),
                      out, "outside the CT volume");
-  // A CT without a head: a uniform block of air.
+  // A CT without a head: a uniform block of air (its five points all at one place, which the
+  // plausibility checks would refuse first: trusted here).
   std::ofstream air(dir / "air.nrrd");
   air << "NRRD0004\ntype: short\ndimension: 3\nsizes: 24 24 24\nspace: left-posterior-superior\n"
          "space directions: (4,0,0) (0,4,0) (0,0,4)\nspace origin: (0,0,0)\nencoding: ascii\n\n";
@@ -241,8 +242,14 @@ TEST(FaceModelPipelineModule, BadInputFailsCleanly)
   std::string nearAir =
     std::regex_replace(Slurp(kPoints), std::regex("\"position\": \\[[^\\]]*\\]"), "\"position\": [40, 40, 40]");
   std::ofstream(dir / "inair.mrk.json") << nearAir;
-  const ModuleRun noHead = RunModuleExecutable(
+  const ModuleRun noHead =
+    RunModuleExecutable("FaceModelPipeline", {dir / "air.nrrd", dir / "inair.mrk.json", "--outputDirectory",
+                                              out.string(), "--noPictures", "--trustControlPoints"});
+  const ModuleRun coincident = RunModuleExecutable(
     "FaceModelPipeline", {dir / "air.nrrd", dir / "inair.mrk.json", "--outputDirectory", out.string(), "--noPictures"});
+  EXPECT_EQ(coincident.exitCode, 1) << coincident.err;
+  EXPECT_NE(coincident.err.find("control points: they place no face (coincident or collinear)"), std::string::npos)
+    << coincident.err;
   EXPECT_EQ(noHead.exitCode, 1) << noHead.err;
   EXPECT_EQ(noHead.ErrLines().size(), 1u) << noHead.err;
   EXPECT_FALSE(fs::exists(out));
