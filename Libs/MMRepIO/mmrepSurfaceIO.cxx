@@ -6,6 +6,7 @@
 #include "mmrepCoordinateSpace.h"
 #include "mmrepIOPath.h"
 #include "mmrepResourceBudget.h"
+#include "mmrepSurfaceFileChecks.h"
 #include "mmrepToolkitMessage.h"
 
 #include <vtkAlgorithm.h>
@@ -76,38 +77,6 @@ std::string SurfaceFormat(const std::string& path)
   return {};
 }
 
-// vtkPLYReader dereferences the vertex coordinates without checking that the header declares
-// them (a header with only "property float x" crashes it): the header is checked first.
-void CheckPLYHeader(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::string line, element;
-  bool x = false, y = false, z = false;
-  if (!std::getline(in, line) || line.rfind("ply", 0) != 0)
-    Fail(path, "not a PLY file (no 'ply' magic)");
-  for (int n = 0; std::getline(in, line) && n < 10000; ++n)
-  {
-    std::istringstream words(line);
-    std::string word, type, name;
-    words >> word;
-    if (word == "end_header")
-    {
-      if (!(x && y && z))
-        Fail(path, "the PLY header declares no vertex x, y and z properties");
-      return;
-    }
-    if (word == "element")
-      words >> element;
-    else if (word == "property" && element == "vertex" && (words >> type >> name))
-    {
-      x = x || name == "x";
-      y = y || name == "y";
-      z = z || name == "z";
-    }
-  }
-  Fail(path, "PLY header without end_header");
-}
-
 } // namespace
 
 vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path)
@@ -136,12 +105,13 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path)
   {
     auto r = vtkSmartPointer<vtkSTLReader>::New();
     r->SetFileName(path.c_str());
+    CheckSTLFile(path);
     r->MergingOn(); // STL repeats the corners of every facet
     reader = r;
   }
   else if (format == "ply")
   {
-    CheckPLYHeader(path);
+    CheckPLYFile(path);
     auto r = vtkSmartPointer<vtkPLYReader>::New();
     r->SetFileName(path.c_str());
     reader = r;

@@ -9,7 +9,7 @@
 //   10^11 points; {dicomjunk} a folder holding junk files only; {cropped} the CT cut below the lips;
 //   {truncnrrd} {truncmha} {truncnii} {truncniigz} headsq cut to half its length in each format;
 //   {badtype} a MetaImage of an unknown ElementType; {nanatlas} the atlas with a NaN landmark;
-//   {truncvtp} the atlas skin cut to half its length; {noxyz} a PLY declaring no y and z;
+//   {truncvtp} {truncply} {truncstl} the atlas skin cut to half its length; {noxyz} a PLY declaring no y and z;
 //   {shifted} {sideways} {swapped} {scaled} {undefined} cthead's control points 15 mm in front of the
 //   face, 15 mm to the side, with
 //   the lips swapped, 1.8 times too far apart, one not placed; {turnedct} {turnedpoints} cthead
@@ -505,6 +505,28 @@ inline std::vector<BadInputCase> BadInputCases()
      "badtype.mha': unknown voxel type"},
     {"Damaged_DistanceMap_truncatedVtp", "DistanceMap", {"{truncvtp}", "{d}/m.nrrd"}, 1, "truncated.vtp': cannot read"},
     {"Damaged_SymmetryPlane_plyWithoutCoordinates", "SymmetryPlane", {"{noxyz}"}, 1, "noxyz.ply': the PLY header"},
+    {"Damaged_SymmetryPlane_truncatedPly", "SymmetryPlane", {"{truncply}"}, 1, "truncated.ply': truncated PLY"},
+    {"Damaged_DistanceMap_truncatedPly",
+     "DistanceMap",
+     {"{truncply}", "{d}/m.nrrd"},
+     1,
+     "truncated.ply': truncated PLY"},
+    {"Damaged_DistanceMap_truncatedStl", "DistanceMap", {"{truncstl}", "{d}/m.nrrd"}, 1, "truncated.stl': truncated"},
+    {"Damaged_AtlasRegistration_truncatedPly",
+     "AtlasRegistration",
+     {"{atlas}", "{truncply}", "{skull}", "{landmarks}", "{d}/o.vtu"},
+     1,
+     "truncated.ply': truncated PLY"},
+    {"Damaged_LocalRefinement_truncatedPly",
+     "LocalRefinement",
+     {"{atlas}", "{truncply}", "{d}/o.vtu"},
+     1,
+     "truncated.ply': truncated PLY"},
+    {"Damaged_MeshReparation_truncatedPly",
+     "MeshReparation",
+     {"{atlas}", "{d}/o.vtu", "--skinSurface", "{truncply}"},
+     1,
+     "truncated.ply': truncated PLY"},
 
     // Non-finite atlas landmarks are blamed on the atlas, not on the control points.
     {"NonFinite_AtlasRegistration_atlasLandmark",

@@ -8,6 +8,7 @@
 #include "mmrepImageIO.h"
 #include "mmrepLandmarkIO.h"
 #include "mmrepModuleRunner.h"
+#include "mmrepSurfaceIO.h"
 
 #include <itkRegionOfInterestImageFilter.h>
 
@@ -203,6 +204,13 @@ const fs::path& Fixtures()
     fs::copy(kAtlasData + "FaceAtlasSkin.vtp", d / "truncated.vtp");
     fs::resize_file(d / "truncated.vtp", fs::file_size(d / "truncated.vtp") / 2);
     WriteFile(d / "noxyz.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n2\n3\n");
+    // The atlas skin as PLY and STL, cut to half their length (vtkPLYReader crashed on such files).
+    const auto skin = mmrep::ReadSurface(kAtlasData + "FaceAtlasSkin.vtp");
+    for (const char* name : {"truncated.ply", "truncated.stl"})
+    {
+      mmrep::WriteSurface(skin, (d / name).string());
+      fs::resize_file(d / name, fs::file_size(d / name) / 2);
+    }
     WriteWrongControlPoints(d);
     WriteReorientedHeads(d);
     return d;
@@ -244,6 +252,8 @@ const std::map<std::string, fs::path>& Placeholders()
     {"{nanatlas}", Fixtures() / "nanatlas.vtu"},
     {"{truncvtp}", Fixtures() / "truncated.vtp"},
     {"{noxyz}", Fixtures() / "noxyz.ply"},
+    {"{truncply}", Fixtures() / "truncated.ply"},
+    {"{truncstl}", Fixtures() / "truncated.stl"},
     {"{shifted}", Fixtures() / "shifted.mrk.json"},
     {"{sideways}", Fixtures() / "sideways.mrk.json"},
     {"{swapped}", Fixtures() / "swapped.mrk.json"},
