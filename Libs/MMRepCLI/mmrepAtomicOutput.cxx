@@ -83,6 +83,7 @@ AtomicOutput::AtomicOutput(std::string finalPath) : final_(std::move(finalPath))
   temp_ = (folder / (stem + ".mmrep-tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) +
                      name.substr(name.size() - ext.size())))
             .string();
+  NameStagedPath(temp_, final_);
 }
 
 AtomicOutput::~AtomicOutput()
@@ -111,6 +112,7 @@ void AtomicOutput::Commit(bool evenIfRunFails)
   std::error_code ec;
   if (!fs::exists(temp_, ec))
     throw ModuleError("cannot write '" + final_ + "': nothing was written");
+  CheckWrittenFile(temp_, final_);
   // Inside a module run the rename waits until every step succeeded (mmrepOutputSafety.cxx).
   const std::string temp = temp_, final = final_;
   if (DeferPublication(
@@ -141,8 +143,9 @@ void AtomicOutput::WriteText(const std::string& text) const
 {
   std::ofstream f(temp_, std::ios::binary);
   f << text;
+  f.close(); // a full disk shows when the buffer is written out
   if (!f)
-    throw ModuleError(final_ + ": cannot write");
+    throw ModuleError("cannot write '" + final_ + "' (is the disk full?)");
 }
 
 } // namespace mmrep::cli

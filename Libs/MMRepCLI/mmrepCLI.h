@@ -224,6 +224,18 @@ private:
   bool committed_ = false;
 };
 
+// Before an output is published: refuses it, naming `shown`, when the disk is full, the file is empty or
+// its format's last record is missing (a writer that met a full disk and returned as if all went well).
+// CheckWrittenFolder checks every file of a staged output folder (mmrepWrittenFiles.cxx).
+void CheckWrittenFile(const std::string& staged, const std::string& shown);
+void CheckWrittenFolder(const std::string& staged, const std::string& shown);
+// A staging name (a temporary file or folder of an output) is shown as the output's own name in every
+// error message of the run: users never see `.mmrep-tmp-` or `.partial-` paths.
+void NameStagedPath(const std::string& staged, const std::string& shown);
+std::string WithShownNames(std::string text);
+// Removes every staged output of the run (a run that ends without unwinding: mmrepFatalError.h).
+void RemoveStagedOutputs();
+
 // Removes, in `folder`, what runs that died (kill -9, a crash) left behind: entries named
 // <prefix><pid>, <prefix><pid>-… or <prefix><pid>.… whose process no longer exists.
 void RemoveStaleOutputs(const std::string& folder, const std::string& prefix);

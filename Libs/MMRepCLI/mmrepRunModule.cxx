@@ -2,6 +2,7 @@
 // Copyright (c) 2026 MMRep developers (see LICENSE)
 // RunModule: command line (TCLAP) from the XML description, error reporting, return parameters.
 #include "mmrepCLIInternal.h"
+#include "mmrepFatalError.h"
 #include "mmrepModuleProcessInformation.h"
 #include "mmrepToolkitMessage.h"
 
@@ -10,6 +11,7 @@
 
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -83,7 +85,8 @@ int Fail(const std::string& module, const std::string& what, int code)
   // A toolkit's text passed on as it came (an ITK exception caught as std::exception) is put in words.
   static const std::regex toolkit(R"(ITK ERROR|itk::ERROR|ERROR: In |\w ?\(0x[0-9a-fA-F]+\))");
   std::cout.flush(); // keep progress lines before the error when both go to one terminal
-  std::cerr << module << ": error: " << OneLine(std::regex_search(what, toolkit) ? ToolkitMessage(what) : what)
+  std::cerr << module
+            << ": error: " << OneLine(WithShownNames(std::regex_search(what, toolkit) ? ToolkitMessage(what) : what))
             << std::endl;
   return code;
 }
@@ -279,6 +282,14 @@ int RunModule(int argc, char* argv[], const char* xmlDescription, const std::fun
     return Fail(ModuleName(argc > 0 ? argv[0] : nullptr, nullptr), e.what(), 1);
   }
   const std::string module = ModuleName(argc > 0 ? argv[0] : nullptr, &description);
+  // An error that cannot unwind (a lost X display while pictures are rendered): one line, nothing
+  // staged left, exit code 1.
+  SetFatalErrorHandler([module](const std::string& message) {
+    std::cout.flush();
+    std::cerr << module << ": error: " << WithShownNames(message) << std::endl;
+    RemoveStagedOutputs();
+    std::_Exit(1);
+  });
 
   ParsedCommandLine parsed;
   Arguments arguments;

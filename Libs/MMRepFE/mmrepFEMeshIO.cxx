@@ -7,10 +7,12 @@
 #include "mmrepFEMeshIO.h"
 
 #include "mmrepCoordinateSpace.h"
+#include "mmrepDiskSpace.h"
 #include "mmrepFEExport.h"
 #include "mmrepResourceBudget.h"
 #include "mmrepToolkitMessage.h"
 
+#include <vtkErrorCode.h>
 #include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
@@ -148,8 +150,13 @@ template <class Writer> void WriteVTK(Writer* writer, vtkUnstructuredGrid* grid,
   const int ok = writer->Write();
   if (!ok || errors.Any() || writer->GetErrorCode() != 0)
   {
+    // VTK's first report of a failed write is its pipeline's ("returned failure for request"): not a reason.
+    const bool full = DiskFull(path) || writer->GetErrorCode() == vtkErrorCode::OutOfDiskSpaceError;
+    const std::string first = errors.Any() ? errors.First() : "";
     std::remove(path.c_str());
-    throw std::runtime_error(path + ": cannot write: " + (errors.Any() ? errors.First() : "write error"));
+    if (full || first.empty() || first.find("returned failure for request") != std::string::npos)
+      throw std::runtime_error(path + ": cannot write" + (full ? WriteFailureReason(path) : " (is the disk full?)"));
+    throw std::runtime_error(path + ": cannot write: " + first);
   }
 }
 
@@ -164,8 +171,9 @@ void WriteText(const FEMesh& mesh, const std::string& path, void (*write)(const 
     if (out)
       return;
   }
+  const std::string why = WriteFailureReason(path);
   std::remove(path.c_str());
-  throw std::runtime_error(path + ": write failed (disk full?)");
+  throw std::runtime_error(path + ": cannot write" + why);
 }
 
 } // namespace

@@ -8,6 +8,9 @@
 // element sets (cable part), dim 0 node sets, dim 2 the lips' facing surfaces (quadrangles, tags
 // after the elements'). Empty groups are omitted (Gmsh cannot store them).
 // Node tag = node index + 1, element tag = element index + 1; point elements follow.
+// The mouth slit's lower-lip twins are written a hair (1e-6 of the model's size) inside their own
+// lip: Gmsh has no notion of distinct coincident nodes and flags every pair within 1e-8 of the
+// model's size as a duplicate (gmsh -check), whatever entity or group holds them.
 #include "mmrepFEExport.h"
 #include "mmrepLipContact.h"
 
@@ -54,6 +57,52 @@ struct Entity
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
   Eigen::Vector3d hi = -lo;
 };
+
+// Node positions as written: the slit's lower-lip twins moved by `kSlitGap` of the model's bounding-box
+// diagonal towards the centre of the lower-lip elements that use them (so no element turns over).
+constexpr double kSlitGap = 1e-6;
+
+std::vector<Eigen::Vector3d> WrittenPositions(const FEMesh& mesh)
+{
+  std::vector<Eigen::Vector3d> positions(mesh.nodes.begin(), mesh.nodes.end());
+  const auto twins = MouthTwins(mesh);
+  const auto lowerLip = mesh.elementSets.find(kLowerLipSet);
+  if (twins.empty() || lowerLip == mesh.elementSets.end() || positions.empty())
+    return positions;
+  Eigen::Vector3d lo = positions.front(), hi = positions.front();
+  for (const auto& p : positions)
+  {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double gap = kSlitGap * (hi - lo).norm();
+  std::vector<Eigen::Vector3d> inward(mesh.nodes.size(), Eigen::Vector3d::Zero());
+  std::vector<char> lowerTwin(mesh.nodes.size(), 0);
+  for (const auto& pair : twins)
+    lowerTwin[static_cast<std::size_t>(pair.second)] = 1;
+  for (auto e : lowerLip->second)
+  {
+    const Element& element = mesh.elements[static_cast<std::size_t>(e)];
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    const int n = NodeCount(element.type);
+    for (int k = 0; k < n; ++k)
+      centre += mesh.nodes[static_cast<std::size_t>(element.nodes[k])];
+    centre /= n;
+    for (int k = 0; k < n; ++k)
+    {
+      const auto node = static_cast<std::size_t>(element.nodes[k]);
+      if (lowerTwin[node])
+        inward[node] += (centre - mesh.nodes[node]).normalized();
+    }
+  }
+  for (const auto& pair : twins)
+  {
+    const auto node = static_cast<std::size_t>(pair.second);
+    if (inward[node].norm() > 0)
+      positions[node] += gap * inward[node].normalized();
+  }
+  return positions;
+}
 
 } // namespace
 
@@ -208,7 +257,7 @@ void WriteGmsh(const FEMesh& mesh, std::ostream& out)
   out << host->dim << " " << host->tag << " 0 " << nodeCount << "\n";
   for (std::size_t i = 0; i < nodeCount; ++i)
     out << i + 1 << "\n";
-  for (const auto& p : mesh.nodes)
+  for (const auto& p : WrittenPositions(mesh))
   {
     writePoint(p);
     out << "\n";

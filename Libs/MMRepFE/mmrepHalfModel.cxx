@@ -15,6 +15,7 @@
 #include <map>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 namespace mmrep
@@ -35,6 +36,70 @@ std::vector<std::int32_t> Restrict(const std::vector<std::int32_t>& ids, const s
     if (newIndex[static_cast<std::size_t>(id)] >= 0)
       out.push_back(newIndex[static_cast<std::size_t>(id)]);
   return out;
+}
+
+// A half model stands for both halves only when the model is symmetric: every solid node's mirror
+// image must be a node (its stored mirror partner, else the nearest solid node) within `tolerance`.
+void RequireSymmetry(const FEMesh& full, const Plane& plane, double tolerance)
+{
+  std::vector<std::size_t> solid;
+  {
+    std::vector<char> used(full.nodes.size(), 0);
+    for (const auto& e : full.elements)
+      if (e.type != ElementType::Cable)
+        for (int k = 0; k < NodeCount(e.type); ++k)
+          used[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)])] = 1;
+    for (std::size_t i = 0; i < used.size(); ++i)
+      if (used[i])
+        solid.push_back(i);
+  }
+  double worst = 0;
+  std::size_t worstNode = 0;
+  // Without a stored map: nearest solid node to each mirror image, on a grid of cells of 4 mm.
+  std::map<std::array<long, 3>, std::vector<std::size_t>> cells;
+  constexpr double cell = 4.0;
+  const auto key = [&](const Eigen::Vector3d& x) {
+    return std::array<long, 3>{static_cast<long>(std::floor(x.x() / cell)), static_cast<long>(std::floor(x.y() / cell)),
+                               static_cast<long>(std::floor(x.z() / cell))};
+  };
+  if (!full.HasMirrorMap())
+    for (auto i : solid)
+      cells[key(full.nodes[i])].push_back(i);
+  for (auto i : solid)
+  {
+    const Eigen::Vector3d image = plane.Mirror(full.nodes[i]);
+    double d = std::numeric_limits<double>::infinity();
+    if (full.HasMirrorMap())
+      d = (full.nodes[static_cast<std::size_t>(full.mirror[i])] - image).norm();
+    else
+    {
+      const auto c = key(image);
+      for (long dx = -1; dx <= 1; ++dx)
+        for (long dy = -1; dy <= 1; ++dy)
+          for (long dz = -1; dz <= 1; ++dz)
+            if (auto it = cells.find({c[0] + dx, c[1] + dy, c[2] + dz}); it != cells.end())
+              for (auto j : it->second)
+                d = std::min(d, (full.nodes[j] - image).norm());
+    }
+    if (d > worst)
+    {
+      worst = d;
+      worstNode = i;
+    }
+  }
+  if (worst > tolerance)
+  {
+    std::ostringstream s;
+    s.precision(3);
+    s << "the model is not symmetric about its plane: the mirror image of node " << worstNode << " lies ";
+    if (std::isinf(worst))
+      s << "more than " << cell << " mm";
+    else
+      s << worst << " mm";
+    s << " from " << (full.HasMirrorMap() ? "its mirror partner" : "every node") << " (at most " << tolerance
+      << " mm); a half model stands for a symmetric model only (build it with --symmetry half-face or averaged)";
+    throw std::invalid_argument(s.str());
+  }
 }
 
 // Which side of the plane each node is on; the plane set's nodes must lie on it.
@@ -255,6 +320,7 @@ FEMesh LeftHalfModel(const FEMesh& full, const HalfModelOptions& options)
   const double tol = options.tolerance;
   const std::vector<Side> side = NodeSides(full, plane, options);
   std::vector<char> keepElement = LeftSolids(full, plane, side, options);
+  RequireSymmetry(full, plane, options.symmetryTolerance); // after the more specific plane checks
   const std::vector<Piece> pieces = LeftTrackPieces(full, side);
   for (const auto& piece : pieces)
     for (std::size_t c = piece.begin; c + 1 < piece.end; ++c)

@@ -25,6 +25,7 @@ struct HalfModelOptions
 {
   std::string planeSet = "midsagittal"; // node set on the symmetry plane (its fit is the plane)
   double tolerance = 1e-3;              // mm: a node this close to the plane is on it
+  double symmetryTolerance = 0.01;      // mm: how far a solid node's mirror image may lie from its partner
 };
 
 // The left half (the +x side of the plane's normal, oriented to the patient's left) of a symmetric
@@ -35,7 +36,9 @@ struct HalfModelOptions
 // or on the plane; a track point embedded in a dropped (right) element re-embedded in a kept one.
 // Adds node set `symmetryBoundary` = the kept nodes of `planeSet`.
 // The mirror map (FEMesh::mirror) is dropped: the kept nodes' partners are gone.
-// Throws std::invalid_argument with one line when the plane set is missing or not planar (a node
+// Throws std::invalid_argument with one line when the model is not symmetric (a solid node's mirror
+// image farther than `symmetryTolerance` from its stored mirror partner, or from every solid node
+// when the model has no mirror map), when the plane set is missing or not planar (a node
 // of it farther than `tolerance` from the fitted plane), a solid element straddles the plane (the
 // model is not cut along its plane nodes), a muscle cable crosses the plane without a point on it,
 // or the model already is a half model.

@@ -71,6 +71,11 @@ void RequireFiniteVoxels(const std::string& path, const TImage* image, double lo
 // is checked against the header's data offset and the voxel bytes before reading.
 void RequireNiftiData(const std::string& path, const itk::ImageIOBase* io);
 
+// teem and MetaIO read a compressed voxel stream without checking its end or its checksum: a NRRD (gzip) or
+// MetaImage (CompressedData) stream is inflated to its end, checksum checked, and its length compared with the
+// header's voxel bytes (mmrepCompressedVoxelData.cxx).
+void RequireCompleteCompressedVoxels(const std::string& path, const itk::ImageIOBase* io);
+
 // MetaIO reports a short or corrupt data block on std::cerr and returns the image anyway: its
 // report is taken as the read's failure.
 class CaptureStandardError

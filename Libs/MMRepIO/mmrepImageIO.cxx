@@ -10,7 +10,9 @@
 #include <itkPixelTraits.h>
 #include <itksys/SystemTools.hxx>
 
+#include "mmrepDiskSpace.h"
 #include "mmrepImageFileChecks.h"
+#include "mmrepSilencedCStandardError.h"
 #include "mmrepToolkitMessage.h"
 
 #include <algorithm>
@@ -33,6 +35,7 @@ template <typename TImage> typename TImage::Pointer ReadWithIO(const std::string
   reader->SetFileName(path);
   reader->SetImageIO(io);
   RequireNiftiData(path, io);
+  RequireCompleteCompressedVoxels(path, io);
   CaptureStandardError library;
   try
   {
@@ -93,6 +96,22 @@ template <typename TImage> typename TImage::Pointer ReadFile(const std::string& 
   }
 }
 
+// ITK's warnings (a metadata item a format cannot store) are blocks "WARNING: In file, line n\n…\n\n";
+// what is left is what MetaIO prints when a write fails.
+std::string WithoutToolkitWarnings(const std::string& text)
+{
+  std::string kept;
+  for (std::size_t at = 0; at < text.size();)
+  {
+    std::size_t end = text.find("\n\n", at);
+    end = end == std::string::npos ? text.size() : end + 2;
+    if (text.compare(at, 12, "WARNING: In ") != 0)
+      kept += text.substr(at, end - at);
+    at = end;
+  }
+  return kept.find_first_not_of(" \n") == std::string::npos ? std::string() : kept;
+}
+
 template <typename TImage> void WriteFile(const TImage* image, const std::string& path)
 {
   EnsureImageIOFactories();
@@ -108,14 +127,44 @@ template <typename TImage> void WriteFile(const TImage* image, const std::string
   writer->SetInput(image);
   writer->SetFileName(path);
   writer->SetUseCompression(true);
-  try
+  std::string failure;
   {
-    writer->Update();
+    CaptureStandardError library;    // MetaIO reports a failed write there and returns
+    SilencedCStandardError niftilib; // its short-write line: the file is checked below
+    try
+    {
+      writer->Update();
+    }
+    catch (const itk::ExceptionObject& e)
+    {
+      failure = ToolkitMessage(e.GetDescription());
+    }
+    if (const std::string text = WithoutToolkitWarnings(library.Text()); failure.empty() && !text.empty())
+      failure = ToolkitMessage(text);
   }
-  catch (const itk::ExceptionObject& e)
+  // NIfTI's writer reports a short write on stderr only: the file is read back as a reader would check it.
+  if (failure.empty())
+  {
+    try
+    {
+      const itk::ImageIOBase::Pointer io = ProbeFile(path, itk::PixelTraits<typename TImage::PixelType>::Dimension);
+      RequireNiftiData(path, io);
+      RequireCompleteCompressedVoxels(path, io);
+    }
+    catch (const std::exception& e)
+    {
+      const std::string what = e.what();
+      const auto colon = what.find("': ");
+      failure = "the written file is incomplete (is the disk full?): " +
+                (colon == std::string::npos ? what : what.substr(colon + 3));
+    }
+  }
+  if (!failure.empty() && DiskFull(path))
+    failure = "no space left on the device";
+  if (!failure.empty())
   {
     itksys::SystemTools::RemoveFile(path); // never leave a partial file behind
-    Fail(path, "cannot write image: " + ToolkitMessage(e.GetDescription()));
+    Fail(path, "cannot write image: " + failure);
   }
 }
 
@@ -123,11 +172,19 @@ template <typename TImage> void WriteFile(const TImage* image, const std::string
 
 CTImage::Pointer ReadCTImage(const std::string& pathOrDicomDirectory)
 {
-  if (itksys::SystemTools::FileIsDirectory(pathOrDicomDirectory))
-  {
-    return imageio::ReadDicomDirectory(pathOrDicomDirectory);
-  }
-  return ReadFile<CTImage>(pathOrDicomDirectory);
+  const CTImage::Pointer ct = itksys::SystemTools::FileIsDirectory(pathOrDicomDirectory)
+                                ? imageio::ReadDicomDirectory(pathOrDicomDirectory)
+                                : ReadFile<CTImage>(pathOrDicomDirectory);
+  // A slice or two (a scout view, one DICOM file of a series) holds no head to segment.
+  constexpr itk::SizeValueType kMinimumVoxelsPerAxis = 3;
+  const auto size = ct->GetLargestPossibleRegion().GetSize();
+  if (size[0] < kMinimumVoxelsPerAxis || size[1] < kMinimumVoxelsPerAxis || size[2] < kMinimumVoxelsPerAxis)
+    Fail(pathOrDicomDirectory, "a CT of " + std::to_string(size[0]) + " x " + std::to_string(size[1]) + " x " +
+                                 std::to_string(size[2]) + " voxels is not a volume of the head (at least " +
+                                 std::to_string(kMinimumVoxelsPerAxis) +
+                                 " voxels along each axis; one slice of a "
+                                 "series? give the series' folder)");
+  return ct;
 }
 
 FloatImage::Pointer ReadFloatImage(const std::string& path)

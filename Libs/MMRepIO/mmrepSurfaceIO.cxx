@@ -4,6 +4,7 @@
 #include "mmrepSurfaceIO.h"
 
 #include "mmrepCoordinateSpace.h"
+#include "mmrepDiskSpace.h"
 #include "mmrepIOPath.h"
 #include "mmrepResourceBudget.h"
 #include "mmrepSurfaceFileChecks.h"
@@ -28,6 +29,7 @@
 #include <vtkXMLPolyDataWriter.h>
 #include <vtksys/SystemTools.hxx>
 
+#include <cerrno>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -252,12 +254,28 @@ void WriteSurface(vtkPolyData* surface, const std::string& path, const std::stri
   }
   Watch(writer, errors);
   const int ok = write();
-  if (!ok || !errors->message.empty() || writer->GetErrorCode() != vtkErrorCode::NoError)
+  std::string why;
+  const unsigned long code = writer->GetErrorCode();
+  const bool failed = !ok || !errors->message.empty() || code != vtkErrorCode::NoError;
+  if (failed && (code == vtkErrorCode::OutOfDiskSpaceError || code == ENOSPC || DiskFull(path)))
+    why = "no space left on the device";
+  else if (failed) // VTK's error code is the errno of its last call (the removal of its partial file): no reason
+    why = !errors->message.empty() ? errors->message : std::string("the writer failed") + WriteFailureReason(path);
+  else if (format == "ply" ||
+           format == "stl") // their writers do not check fwrite: read the file back as a reader would
+  {
+    try
+    {
+      format == "ply" ? CheckPLYFile(path) : CheckSTLFile(path);
+    }
+    catch (const std::exception&)
+    {
+      why = std::string("the written file is incomplete") + WriteFailureReason(path);
+    }
+  }
+  if (!why.empty())
   {
     vtksys::SystemTools::RemoveFile(path); // never leave a partial file behind
-    const std::string why = !errors->message.empty()
-                              ? errors->message
-                              : vtkErrorCode::GetStringFromErrorCode(static_cast<int>(writer->GetErrorCode()));
     Fail(path, "cannot write surface: " + why);
   }
 }

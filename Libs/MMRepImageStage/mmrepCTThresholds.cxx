@@ -8,6 +8,7 @@
 #include <itkHistogram.h>
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace mmrep
@@ -75,6 +76,11 @@ CTThresholds ChooseThresholds(const CTImage* image, ThresholdMode mode, double s
   CTThresholds result;
   const bool explicitSkin = !std::isnan(skin), explicitBone = !std::isnan(bone);
   const bool hu = mode == ThresholdMode::Hounsfield || (mode == ThresholdMode::Automatic && LooksLikeHounsfield(image));
+  // Hounsfield thresholds on scanner units would take the whole volume (air included) as the head.
+  if (mode == ThresholdMode::Hounsfield && !(explicitSkin && explicitBone) && !LooksLikeHounsfield(image))
+    throw std::runtime_error("--thresholdMode hounsfield: the volume is not in Hounsfield units (less than 5 % of "
+                             "its voxels lie below -500, where air is); use --thresholdMode automatic or give "
+                             "--skinThreshold and --boneThreshold");
   if (explicitSkin && explicitBone)
   {
     result = {skin, bone, "explicit"};
@@ -97,8 +103,18 @@ CTThresholds ChooseThresholds(const CTImage* image, ThresholdMode mode, double s
     result.source += "+explicit";
   }
   if (!(result.bone > result.skin))
-    throw std::runtime_error("bone threshold (" + std::to_string(result.bone) + ") must be above the skin threshold (" +
-                             std::to_string(result.skin) + ")");
+  {
+    const auto number = [](double v) {
+      std::ostringstream s;
+      s << v;
+      return s.str();
+    };
+    const auto named = [&](const char* flag, const char* what, bool given, double v) {
+      return (given ? std::string("--") + flag : std::string("the automatic ") + what) + " " + number(v);
+    };
+    throw std::runtime_error(named("boneThreshold", "bone threshold", explicitBone, result.bone) + " must be above " +
+                             named("skinThreshold", "skin threshold", explicitSkin, result.skin));
+  }
   return result;
 }
 

@@ -8,6 +8,7 @@
 #include <itkConnectedComponentImageFilter.h>
 #include <itkRelabelComponentImageFilter.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -246,11 +247,15 @@ HeadSegmentation SegmentHead(const CTImage* ct, const HeadSegmentationOptions& o
   report(0.35);
   const std::size_t skinVoxels = KeepLargestComponent(skin);
   result.skinVolume = skinVoxels * VoxelVolume(skin);
-  if (result.skinVolume < o.minimumHeadVolume)
+  const double imagedVolume = static_cast<double>(skin->GetBufferedRegion().GetNumberOfPixels()) * VoxelVolume(skin);
+  const double minimumHeadVolume =
+    o.minimumHeadVolume > 0 ? o.minimumHeadVolume : std::max(1.5e5, std::min(5.0e5, 0.05 * imagedVolume));
+  if (result.skinVolume < minimumHeadVolume)
   {
     std::ostringstream s;
     s << "no head found: the largest object above the skin threshold " << o.skinThreshold << " is "
-      << result.skinVolume / 1000.0 << " ml (a head is at least " << o.minimumHeadVolume / 1000.0 << " ml)";
+      << result.skinVolume / 1000.0 << " ml (a head in this " << imagedVolume / 1.0e6 << " l volume is at least "
+      << minimumHeadVolume / 1000.0 << " ml)";
     throw std::runtime_error(s.str());
   }
   report(0.55);

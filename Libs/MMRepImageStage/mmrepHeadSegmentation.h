@@ -18,11 +18,13 @@ namespace mmrep
 
 struct HeadSegmentationOptions
 {
-  double skinThreshold = 0;         // intensities >= this are tissue
-  double boneThreshold = 0;         // intensities >= this are bone
-  unsigned int openingRadius = 1;   // voxels; 0 disables the opening
-  bool fillInteriorAir = true;      // fill airways and sinuses in the skin mask
-  double minimumHeadVolume = 5.0e5; // mm³ (0.5 l): below that there is no head in the volume
+  double skinThreshold = 0;       // intensities >= this are tissue
+  double boneThreshold = 0;       // intensities >= this are bone
+  unsigned int openingRadius = 1; // voxels; 0 disables the opening
+  bool fillInteriorAir = true;    // fill airways and sinuses in the skin mask
+  // mm³; 0: from the CT's size, 5 % of the imaged volume, at most 500 ml (an adult head is 3–5 l)
+  // and at least 150 ml (a newborn's is about 400 ml), so that a small head in a small volume is found.
+  double minimumHeadVolume = 0;
   double minimumBoneVolume = 2.0e4; // mm³ (20 ml)
 };
 

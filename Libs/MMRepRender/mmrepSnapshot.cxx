@@ -2,6 +2,10 @@
 // Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepSnapshot.h"
 
+#include "mmrepDiskSpace.h"
+#include "mmrepFatalError.h"
+#include "mmrepSilencedCStandardError.h"
+
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkLookupTable.h>
@@ -84,8 +88,21 @@ constexpr int kDisplayAttempts = 20;
 constexpr int kDisplayRetryMilliseconds = 250; // 5 s in all
 } // namespace
 
+namespace
+{
+// Xlib calls this when the connection to the X server is lost (the server ended) and ends the
+// process if it returns: the run is ended through FatalError, which removes what it staged.
+extern "C" int DisplayLost(Display*)
+{
+  const char* display = std::getenv("DISPLAY");
+  mmrep::FatalError(std::string("the X display '") + (display ? display : "") +
+                    "' closed while the pictures were rendered (its X server ended); nothing written");
+}
+} // namespace
+
 void RequireDisplay(const std::string& pngPath)
 {
+  XSetIOErrorHandler(DisplayLost); // again each time: a library may have set its own
   const char* display = std::getenv("DISPLAY");
   if (display == nullptr || *display == '\0')
     throw std::runtime_error("no X display for rendering " + pngPath + ": run under xvfb-run -a");
@@ -103,6 +120,13 @@ void RequireDisplay(const std::string& pngPath)
   }
   if (held == nullptr)
     throw std::runtime_error(std::string("cannot connect to the X display '") + display + "' for rendering " + pngPath);
+  // The server may have ended since (VTK aborts when a new window cannot connect): a fresh connection
+  // each time tells, and the run then unwinds with one line.
+  Display* probe = XOpenDisplay(nullptr);
+  if (probe == nullptr)
+    throw std::runtime_error(std::string("the X display '") + display + "' closed (its X server ended) before " +
+                             pngPath + " was rendered");
+  XCloseDisplay(probe);
 }
 
 void WriteWindowPNG(vtkRenderWindow* window, const std::string& pngPath)
@@ -117,9 +141,12 @@ void WriteWindowPNG(vtkRenderWindow* window, const std::string& pngPath)
   vtkNew<vtkPNGWriter> png;
   png->SetFileName(pngPath.c_str());
   png->SetInputConnection(grab->GetOutputPort());
-  png->Write();
+  {
+    mmrep::SilencedCStandardError libpng; // "libpng error: Write Error"
+    png->Write();
+  }
   if (png->GetErrorCode() != 0)
-    throw std::runtime_error("cannot write " + pngPath);
+    throw std::runtime_error("cannot write " + pngPath + mmrep::WriteFailureReason(pngPath));
 }
 
 void WriteSnapshot(const std::vector<SnapshotLayer>& layers, const SnapshotOptions& o, const std::string& pngPath)

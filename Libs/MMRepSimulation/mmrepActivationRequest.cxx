@@ -125,4 +125,13 @@ DeckOptions MakeDeckOptions(const FEMesh& mesh, const ActivationRequest& request
   return deck;
 }
 
+std::string LipContactWarning(const FEMesh& mesh, const DeckOptions& deck, const std::string& modelName)
+{
+  if (!deck.lipContact || HasMouthSlit(mesh))
+    return "";
+  return "input model '" + modelName +
+         "' has no mouth slit (sets upperLip, lowerLip, upperLipContact, lowerLipContact): the lips are simulated "
+         "as one block, without lip contact";
+}
+
 } // namespace mmrep::simulation

@@ -49,4 +49,8 @@ std::array<HyperelasticMaterial, 4> LayerMaterials(double c10Pa, double c20Pa, d
 DeckOptions MakeDeckOptions(const FEMesh& mesh, const ActivationRequest& request, const std::string& modelName,
                             Gesture& gesture);
 
+// Why the simulation has no lip contact although it was asked for (a model without the mouth slit's
+// sets), in words for a warning line; empty when it has.
+std::string LipContactWarning(const FEMesh& mesh, const DeckOptions& deck, const std::string& modelName);
+
 } // namespace mmrep::simulation

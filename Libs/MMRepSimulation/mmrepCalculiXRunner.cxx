@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <thread>
 
 namespace mmrep::simulation
 {
@@ -91,16 +92,32 @@ public:
   ~Child()
   {
     if (pid_ > 0)
-    {
-      ::kill(pid_, SIGTERM);
-      Wait();
-    }
+      Stop();
     if (fd_ >= 0)
       ::close(fd_);
   }
   Child(const Child&) = delete;
   Child& operator=(const Child&) = delete;
   int fd() const { return fd_; }
+  // SIGTERM, then SIGKILL when ccx has not ended after a grace period (a hung solver ignores
+  // nothing but may never reach its next signal check).
+  void Stop()
+  {
+    ::kill(pid_, SIGTERM);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+    int status = 0;
+    while (::waitpid(pid_, &status, WNOHANG) == 0)
+    {
+      if (std::chrono::steady_clock::now() > deadline)
+      {
+        ::kill(pid_, SIGKILL);
+        Wait();
+        return;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    pid_ = -1;
+  }
   int Wait() // the wait status
   {
     int status = 0;
@@ -268,6 +285,16 @@ CalculiXRun RunCalculiX(const std::string& deck, const RunOptions& options)
       run.stepTime = b.time;
     }
   run.converged = run.exitCode == 0 && finished && run.increments > 0 && run.stepTime > 1 - 1e-6;
+  const bool solveGaveUp = run.cutbacks > 0 || run.log.find("too many cutbacks") != std::string::npos ||
+                           run.log.find("diverge") != std::string::npos;
+  run.outcome = run.converged                                 ? CalculiXOutcome::Converged
+                : WIFSIGNALED(status)                         ? CalculiXOutcome::Crashed
+                : solveGaveUp || run.increments > 0           ? CalculiXOutcome::DidNotConverge
+                : run.log.find("*ERROR") != std::string::npos ? CalculiXOutcome::DeckRefused
+                                                              : CalculiXOutcome::NoResults;
+  if (run.outcome == CalculiXOutcome::Crashed)
+    run.message = "CalculiX crashed (" + std::string(::strsignal(WTERMSIG(status))) + ") at step time " +
+                  std::to_string(run.stepTime) + (run.message.empty() ? "" : ": " + run.message);
   if (!run.converged && run.message.empty())
   {
     // Last non-empty log line tells what ccx was doing when it stopped.
@@ -289,6 +316,24 @@ CalculiXRun RunCalculiX(const std::string& deck, const RunOptions& options)
   if (!run.converged && options.keepDirectory)
     run.message += " (job folder kept: " + run.directory + ")";
   return run;
+}
+
+std::string DescribeFailure(const CalculiXRun& run)
+{
+  switch (run.outcome)
+  {
+    case CalculiXOutcome::Converged:
+      return "";
+    case CalculiXOutcome::DidNotConverge:
+      return "the CalculiX solve did not converge: " + run.message;
+    case CalculiXOutcome::DeckRefused:
+      return "CalculiX refused the model's input deck: " + run.message;
+    case CalculiXOutcome::Crashed:
+      return run.message + " (a fault of the solver, not of the model)";
+    case CalculiXOutcome::NoResults:
+      break;
+  }
+  return "CalculiX ended without results (exit code " + std::to_string(run.exitCode) + "): " + run.message;
 }
 
 } // namespace mmrep::simulation

@@ -20,9 +20,20 @@ struct RunOptions
   std::function<void(double)> progress; // step time reached, in [0, 1]
 };
 
+// How a ccx run ended: only DidNotConverge says something about the model's mechanics.
+enum class CalculiXOutcome
+{
+  Converged,      // exit code 0, "Job finished", the last result at step time 1
+  DidNotConverge, // ccx cut the increment back until it gave up (or stopped before step time 1)
+  DeckRefused,    // ccx stopped on an *ERROR in the deck before any increment
+  Crashed,        // ccx was killed by a signal (a fault of the solver or of the machine)
+  NoResults,      // ccx ended without an error message and without results
+};
+
 struct CalculiXRun
 {
-  bool converged = false; // exit code 0, "Job finished", and the last result at step time 1
+  bool converged = false; // outcome == Converged
+  CalculiXOutcome outcome = CalculiXOutcome::NoResults;
   int exitCode = -1;
   int increments = 0;    // converged increments (result blocks written)
   int iterations = 0;    // Newton iterations over all attempts
@@ -43,5 +54,8 @@ std::string FindCalculiX(const std::string& executable = "");
 // Throws std::runtime_error only when ccx cannot be started or its output is unreadable; a solve
 // that does not converge returns converged == false with `message` set.
 CalculiXRun RunCalculiX(const std::string& deck, const RunOptions& options);
+
+// One line for a run that did not converge, naming what failed (the solve, the deck, the solver).
+std::string DescribeFailure(const CalculiXRun& run);
 
 } // namespace mmrep::simulation

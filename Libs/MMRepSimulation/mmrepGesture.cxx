@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <set>
 #include <stdexcept>
 
 namespace mmrep::simulation
@@ -89,7 +90,22 @@ Gesture ReadGestureFile(const std::string& path)
   Gesture g;
   try
   {
-    const nlohmann::json j = nlohmann::json::parse(in);
+    // nlohmann keeps the last of two equal keys without a word: a duplicate is refused, naming it.
+    std::vector<std::set<std::string>> objects;
+    std::string duplicate;
+    const nlohmann::json j =
+      nlohmann::json::parse(in, [&](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+        if (event == nlohmann::json::parse_event_t::object_start)
+          objects.emplace_back();
+        else if (event == nlohmann::json::parse_event_t::object_end && !objects.empty())
+          objects.pop_back();
+        else if (event == nlohmann::json::parse_event_t::key && !objects.empty() &&
+                 !objects.back().insert(parsed.get<std::string>()).second && duplicate.empty())
+          duplicate = parsed.get<std::string>();
+        return true;
+      });
+    if (!duplicate.empty())
+      throw std::invalid_argument("key '" + duplicate + "' is given twice (which one is meant?)");
     if (!j.is_object())
       throw std::invalid_argument("it is not a JSON object");
     for (auto it = j.begin(); it != j.end(); ++it)

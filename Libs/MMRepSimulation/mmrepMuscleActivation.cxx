@@ -77,7 +77,7 @@ ActivationResult SimulateMuscleActivation(const FEMesh& mesh, const ActivationOp
   result.deck = WriteCalculiXDeck(mesh, options.deck, deck);
   result.run = RunCalculiX(deck.str(), options.run);
   if (!result.run.converged)
-    throw std::runtime_error("the CalculiX solve did not converge: " + result.run.message);
+    throw std::runtime_error(DescribeFailure(result.run));
   const FrdBlock* disp = LastBlock(result.run.results, "DISP");
   if (disp == nullptr || disp->components < 3)
     throw std::runtime_error("the CalculiX results hold no displacements");

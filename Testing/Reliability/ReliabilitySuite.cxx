@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -171,6 +172,13 @@ const fs::path& Fixtures()
 )");
     WriteFile(d / "dicomjunk" / "IM0001.dcm", std::string(128, '\0') + "DICM" + std::string(300, '\x7f'));
     WriteFile(d / "dicomjunk" / "notes.txt", "not an image\n");
+    // A MetaImage header whose data file is missing; a single slice.
+    WriteFile(d / "noraw.mhd", "ObjectType = Image\nNDims = 3\nDimSize = 64 64 64\nElementType = MET_SHORT\n"
+                               "ElementDataFile = noraw.raw\n");
+    WriteFile(d / "oneslice.nrrd",
+              "NRRD0004\ntype: short\ndimension: 3\nsizes: 64 64 1\n" + lps + std::string(64 * 64 * 2, '\0'));
+    WriteFile(d / "twice.json",
+              R"({"name": "smile", "muscles": {"ZygomaticusMajor_L": 1.0, "ZygomaticusMajor_L": 0.2}})");
     // The bundled CT cut 5 mm below the lower lip: the control points stay inside, the chin is gone.
     const auto ct = mmrep::ReadCTImage(kSampleData + "cthead.nrrd");
     auto region = ct->GetLargestPossibleRegion();
@@ -194,11 +202,57 @@ const fs::path& Fixtures()
       mmrep::WriteImage(headsq.GetPointer(), (d / name).string());
       fs::resize_file(d / name, fs::file_size(d / name) / 2);
     }
+    // One byte flipped halfway through the compressed voxels of the atlas's CT in each compressed format
+    // (the stream's checksum fails; the readers alone returned a volume with wrong voxels).
+    for (const char* name : {"corrupt.nrrd", "corrupt.mha", "corrupt.nii.gz"})
+    {
+      mmrep::WriteImage(ct.GetPointer(), (d / name).string());
+      std::fstream f(d / name, std::ios::in | std::ios::out | std::ios::binary);
+      const auto middle = static_cast<std::streamoff>(fs::file_size(d / name) / 2);
+      char byte = 0;
+      f.seekg(middle);
+      f.get(byte);
+      f.seekp(middle);
+      f.put(static_cast<char>(byte ^ 0x5a));
+    }
     WriteFile(d / "badtype.mha", "ObjectType = Image\nNDims = 3\nDimSize = 4 4 4\nElementType = MET_FOO\n"
                                  "ElementDataFile = LOCAL\n" +
                                    std::string(64, '\0'));
     // The atlas with one landmark not a number; a surface cut short; a PLY without coordinates.
     auto atlas = mmrep::ReadFEMesh(kAtlasData + "FaceAtlas.vtu");
+    // A zero displacement field over the whole atlas (10 mm grid): MuscleInference runs to its writer.
+    {
+      Eigen::Vector3d low = atlas.nodes.front(), high = atlas.nodes.front();
+      for (const auto& x : atlas.nodes)
+      {
+        low = low.cwiseMin(x);
+        high = high.cwiseMax(x);
+      }
+      auto zero = mmrep::DisplacementField::New();
+      mmrep::DisplacementField::SizeType size;
+      mmrep::DisplacementField::PointType origin;
+      mmrep::DisplacementField::SpacingType spacing;
+      for (int a = 0; a < 3; ++a)
+      {
+        origin[a] = low[a] - 20.0;
+        spacing[a] = 10.0;
+        size[a] = static_cast<std::size_t>(std::ceil((high[a] - low[a] + 40.0) / 10.0)) + 1;
+      }
+      zero->SetRegions(size);
+      zero->SetOrigin(origin);
+      zero->SetSpacing(spacing);
+      zero->Allocate();
+      zero->FillBuffer(mmrep::DisplacementField::PixelType(0.0f));
+      mmrep::WriteDisplacementField(zero, (d / "zerofield.nrrd").string());
+    }
+    // The atlas with its leftmost node moved 2 mm back: no longer symmetric (MeshConvert --half).
+    {
+      auto asymmetric = atlas;
+      auto leftmost = std::max_element(asymmetric.nodes.begin(), asymmetric.nodes.end(),
+                                       [](const auto& a, const auto& b) { return a.x() < b.x(); });
+      leftmost->y() += 2.0;
+      mmrep::WriteFEMesh(asymmetric, (d / "asymmetric.vtu").string());
+    }
     atlas.landmarks.at(1).position.x() = std::numeric_limits<double>::quiet_NaN();
     mmrep::WriteFEMesh(atlas, (d / "nanatlas.vtu").string());
     fs::copy(kAtlasData + "FaceAtlasSkin.vtp", d / "truncated.vtp");
@@ -238,6 +292,7 @@ const std::map<std::string, fs::path>& Placeholders()
     {"{skin}", kAtlasData + "FaceAtlasSkin.vtp"},
     {"{skull}", kAtlasData + "FaceAtlasSkull.vtp"},
     {"{field}", Fixtures() / "field.nrrd"},
+    {"{zerofield}", Fixtures() / "zerofield.nrrd"},
     {"{nan}", Fixtures() / "nan.nrrd"},
     {"{big}", Fixtures() / "big.nrrd"},
     {"{bigvtu}", Fixtures() / "bigvtu.vtu"},
@@ -254,6 +309,13 @@ const std::map<std::string, fs::path>& Placeholders()
     {"{noxyz}", Fixtures() / "noxyz.ply"},
     {"{truncply}", Fixtures() / "truncated.ply"},
     {"{truncstl}", Fixtures() / "truncated.stl"},
+    {"{asymmetric}", Fixtures() / "asymmetric.vtu"},
+    {"{gesturetwice}", Fixtures() / "twice.json"},
+    {"{noraw}", Fixtures() / "noraw.mhd"},
+    {"{oneslice}", Fixtures() / "oneslice.nrrd"},
+    {"{corruptnrrd}", Fixtures() / "corrupt.nrrd"},
+    {"{corruptmha}", Fixtures() / "corrupt.mha"},
+    {"{corruptniigz}", Fixtures() / "corrupt.nii.gz"},
     {"{shifted}", Fixtures() / "shifted.mrk.json"},
     {"{sideways}", Fixtures() / "sideways.mrk.json"},
     {"{swapped}", Fixtures() / "swapped.mrk.json"},
@@ -306,8 +368,13 @@ TEST_P(BadInput, OneLineNothingTouchedNothingLeft)
 
   // Inputs: the fixtures the case names, copied in; then the earlier outputs.
   std::vector<std::string> args;
+  const fs::path full = dir / "full";
+  if (c.fullDiskFreeKiB >= 0)
+    fs::create_directories(full);
   for (std::string a : c.args)
   {
+    for (std::size_t at; (at = a.find("{full}")) != std::string::npos;)
+      a.replace(at, 6, full.string());
     for (const auto& [key, source] : Placeholders())
       for (std::size_t at; (at = a.find(key)) != std::string::npos;)
       {
@@ -325,6 +392,7 @@ TEST_P(BadInput, OneLineNothingTouchedNothingLeft)
     {
       fs::create_directories(dir / e);
       std::ofstream(dir / e / "model.vtu") << "an earlier run's model\n";
+      std::ofstream(dir / e / "report.md") << "an earlier run's report\n";
     }
     else
       std::ofstream(dir / e) << "an earlier run's " << e << "\n";
@@ -335,6 +403,15 @@ TEST_P(BadInput, OneLineNothingTouchedNothingLeft)
   if (c.display && (display == nullptr || *display == '\0'))
     cmd += "xvfb-run -a -n " + std::to_string(100 + ::getpid() % 20000) + " -f " +
            Quote((logs / "Xauthority").string()) + " -s \"-screen 0 1600x1200x24 -noreset\" ";
+  // The full disk: a tmpfs in a private mount namespace (gone with the run), filled to leave the case's free
+  // space; what the run leaves on it is listed before it goes.
+  if (c.fullDiskFreeKiB >= 0)
+    cmd += "env LEFT=" + Quote((logs / "left").string()) +
+           " FILL=" + std::to_string((4096 - c.fullDiskFreeKiB) * 1024) +
+           " unshare -m sh -c 'mount -t tmpfs -o size=4096k mmrep-full \"$0\" || exit 97; "
+           "head -c $FILL /dev/zero > \"$0/.filler\" 2>/dev/null; \"$@\"; rc=$?; rm -f \"$0/.filler\"; "
+           "ls -A \"$0\" > \"$LEFT\"; exit $rc' " +
+           Quote(full.string()) + " ";
   if (c.addressSpaceKiB > 0)
     cmd += "sh -c 'ulimit -v " + std::to_string(c.addressSpaceKiB) + " && exec \"$0\" \"$@\"' ";
   cmd += Quote(std::string(MMREP_BINARY_DIR) + "/bin/" + c.module);
@@ -357,6 +434,14 @@ TEST_P(BadInput, OneLineNothingTouchedNothingLeft)
     std::regex_search(lines[0], std::regex(R"(0x[0-9a-fA-F]{6,}|ITK ERROR|itk::|\bvtk[A-Z]\w* \(|\.(cxx|hxx):\d+)")))
     << lines[0];
   EXPECT_EQ(Differences(before, Snapshot(dir)), "") << lines[0];
+  // Staging names are never shown.
+  EXPECT_EQ(lines[0].find(".mmrep-tmp-"), std::string::npos) << lines[0];
+  EXPECT_EQ(lines[0].find(".partial-"), std::string::npos) << lines[0];
+  if (c.fullDiskFreeKiB >= 0)
+  {
+    ASSERT_TRUE(fs::exists(logs / "left")) << "the full disk was not mounted: " << run.err;
+    EXPECT_EQ(Slurp(logs / "left"), "") << "left on the full disk";
+  }
 }
 
 // A module command line run with its stdout dropped and its stderr kept in `err`.

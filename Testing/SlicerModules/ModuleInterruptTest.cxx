@@ -14,7 +14,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -28,22 +31,34 @@ using mmrep::testing::Slurp;
 const std::string kSampleData = MMREP_SAMPLE_DATA;
 
 // Starts build/bin/<module> with TMPDIR set, reads its stdout until a line contains `trigger`,
-// then sends `signal`; returns the exit code (128 + signal number when killed by it) and stdout.
+// then sends `signal`; returns the exit code (128 + signal number when killed by it), stdout and stderr.
 struct Interrupted
 {
   int exitCode = -1;
   bool triggered = false;
-  std::string out;
+  std::string out, err;
+};
+
+// How the run is interrupted beyond the trigger and signal: `environment` entries are added to the
+// child's environment; when `waitForFile` is given the signal is sent only once that file exists (a
+// stand-in child's sign of life); `target` receives the signal instead of the module (its X server).
+struct Interruption
+{
+  std::vector<std::string> environment;
+  fs::path waitForFile;
+  pid_t target = 0;
 };
 
 Interrupted RunAndInterrupt(const std::string& module, const std::vector<std::string>& args, const fs::path& tmpdir,
-                            const std::string& trigger, int signal)
+                            const std::string& trigger, int signal, const Interruption& how = {})
 {
+  const fs::path errFile = fs::temp_directory_path() / ("mmrep-interrupt-stderr-" + std::to_string(::getpid()));
   int fds[2];
   EXPECT_EQ(::pipe(fds), 0);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
   posix_spawn_file_actions_addclose(&actions, fds[0]);
   posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
   std::vector<std::string> strings = {std::string(MMREP_BINARY_DIR) + "/bin/" + module};
@@ -53,6 +68,7 @@ Interrupted RunAndInterrupt(const std::string& module, const std::vector<std::st
     argv.push_back(s.data());
   argv.push_back(nullptr);
   std::vector<std::string> env = {"TMPDIR=" + tmpdir.string()};
+  env.insert(env.end(), how.environment.begin(), how.environment.end());
   for (char** e = environ; *e; ++e)
     if (std::string(*e).rfind("TMPDIR=", 0) != 0)
       env.emplace_back(*e);
@@ -72,13 +88,17 @@ Interrupted RunAndInterrupt(const std::string& module, const std::vector<std::st
     if (!result.triggered && result.out.find(trigger) != std::string::npos)
     {
       result.triggered = true;
-      ::kill(pid, signal);
+      for (int i = 0; !how.waitForFile.empty() && !fs::exists(how.waitForFile) && i < 600; ++i)
+        ::usleep(50000);
+      ::kill(how.target > 0 ? how.target : pid, signal);
     }
   }
   ::close(fds[0]);
   int status = 0;
   ::waitpid(pid, &status, 0);
   result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 256 + WTERMSIG(status); // 256+: died of it
+  result.err = Slurp(errFile);
+  fs::remove(errFile);
   return result;
 }
 
@@ -161,6 +181,113 @@ TEST(ModuleInterrupt, SimulateMuscleActivationStopsCalculiXAndRemovesItsJobFolde
                                    dir / "tmp", "<filter-progress>0.1</filter-progress>", SIGTERM);
   ASSERT_TRUE(run.triggered) << run.out;
   EXPECT_EQ(run.exitCode, 143) << run.out;
+  EXPECT_EQ(Entries(dir), (std::vector<std::string>{"tmp"}));
+  fs::remove_all(dir);
+}
+
+// An X server of the test's own (Xvfb), stopped at the end of the scope.
+class XServer
+{
+public:
+  XServer()
+  {
+    number_ = 300 + ::getpid() % 20000;
+    while (fs::exists("/tmp/.X11-unix/X" + std::to_string(number_)) ||
+           fs::exists("/tmp/.X" + std::to_string(number_) + "-lock"))
+      ++number_;
+    const std::string display = ":" + std::to_string(number_);
+    std::string xvfb = "Xvfb", screen = "-screen", zero = "0", size = "2560x1600x24", nolisten = "-nolisten",
+                tcp = "tcp", shown = display;
+    char* argv[] = {xvfb.data(), shown.data(),    screen.data(), zero.data(),
+                    size.data(), nolisten.data(), tcp.data(),    nullptr};
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+    EXPECT_EQ(::posix_spawnp(&pid_, "Xvfb", &actions, nullptr, argv, environ), 0);
+    posix_spawn_file_actions_destroy(&actions);
+    for (int i = 0; i < 200 && !fs::exists("/tmp/.X11-unix/X" + std::to_string(number_)); ++i)
+      ::usleep(50000);
+  }
+  ~XServer() { Stop(); }
+  std::string Display() const { return ":" + std::to_string(number_); }
+  pid_t Pid() const { return pid_; }
+  void Stop()
+  {
+    if (pid_ > 0)
+    {
+      ::kill(pid_, SIGTERM);
+      ::waitpid(pid_, nullptr, 0);
+      pid_ = -1;
+    }
+  }
+
+private:
+  int number_ = 0;
+  pid_t pid_ = -1;
+};
+
+// Pictures are rendered after the model is staged (progress 0.87–0.95): a signal then is handled
+// like one at any other time.
+TEST(ModuleInterrupt, FaceModelPipelineStopsOnSIGTERMWhilePicturesAreRendered)
+{
+  const fs::path dir = FreshFolder("pictures");
+  XServer x;
+  const auto run =
+    RunAndInterrupt("FaceModelPipeline",
+                    {kSampleData + "/cthead.nrrd", kSampleData + "/cthead.ControlPoints.mrk.json", "--outputDirectory",
+                     (dir / "speaker").string()},
+                    dir / "tmp", "<filter-progress>0.87</filter-progress>", SIGTERM, {{"DISPLAY=" + x.Display()}});
+  ASSERT_TRUE(run.triggered) << run.out << run.err;
+  EXPECT_EQ(run.exitCode, 143) << run.err;
+  EXPECT_EQ(run.err, "FaceModelPipeline: interrupted by SIGTERM, nothing written\n");
+  EXPECT_EQ(Entries(dir), (std::vector<std::string>{"tmp"}));
+  fs::remove_all(dir);
+}
+
+// The X server ending while the pictures are rendered (xvfb-run stopped, a closed session): VTK
+// would abort the process and leave the staging folder; the run ends with one line, nothing left.
+TEST(ModuleInterrupt, FaceModelPipelineEndsCleanlyWhenItsXServerEndsDuringThePictures)
+{
+  const fs::path dir = FreshFolder("xserver");
+  XServer x;
+  const auto run = RunAndInterrupt("FaceModelPipeline",
+                                   {kSampleData + "/cthead.nrrd", kSampleData + "/cthead.ControlPoints.mrk.json",
+                                    "--outputDirectory", (dir / "speaker").string()},
+                                   dir / "tmp", "<filter-progress>0.87</filter-progress>", SIGTERM,
+                                   {{"DISPLAY=" + x.Display()}, {}, x.Pid()});
+  ASSERT_TRUE(run.triggered) << run.out << run.err;
+  EXPECT_EQ(run.exitCode, 1) << run.err;
+  EXPECT_NE(run.err.find("FaceModelPipeline: error: the X display '" + x.Display() + "' closed"), std::string::npos)
+    << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  EXPECT_EQ(run.err.find(".partial-"), std::string::npos) << run.err;
+  EXPECT_EQ(Entries(dir), (std::vector<std::string>{"tmp"}));
+  fs::remove_all(dir);
+}
+
+// A CalculiX that ignores SIGTERM (a hung solver) must not outlive the module nor keep it running.
+TEST(ModuleInterrupt, SimulateMuscleActivationKillsAHungCalculiX)
+{
+  const fs::path dir = FreshFolder("hung");
+  const fs::path ccx = dir / "hung-ccx.sh", pidFile = dir / "ccx.pid";
+  std::ofstream(ccx) << "#!/bin/sh\ntrap '' TERM\necho $$ > '" << pidFile.string() << ".new'\nmv '" << pidFile.string()
+                     << ".new' '" << pidFile.string() << "'\nwhile :; do :; done\n";
+  fs::permissions(ccx, fs::perms::owner_all);
+  const std::string atlas = std::string(MMREP_SOURCE_DIR) + "/Resources/Atlas/FaceAtlas.vtu";
+  const auto start = std::chrono::steady_clock::now();
+  const auto run = RunAndInterrupt(
+    "SimulateMuscleActivation", {atlas, (dir / "smile.vtu").string(), "--muscles", "ZygomaticusMajor_L"}, dir / "tmp",
+    "<filter-progress>0.1</filter-progress>", SIGTERM, {{"MMREP_CCX=" + ccx.string()}, pidFile});
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_TRUE(run.triggered) << run.out;
+  EXPECT_EQ(run.exitCode, 143) << run.out;
+  EXPECT_LT(seconds, 60.0);
+  pid_t pid = 0;
+  std::ifstream(pidFile) >> pid;
+  ASSERT_GT(pid, 0);
+  EXPECT_NE(::kill(pid, 0), 0) << "the hung ccx " << pid << " survived the module";
+  fs::remove(ccx);
+  fs::remove(pidFile);
   EXPECT_EQ(Entries(dir), (std::vector<std::string>{"tmp"}));
   fs::remove_all(dir);
 }

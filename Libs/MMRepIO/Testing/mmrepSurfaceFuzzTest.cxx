@@ -23,16 +23,8 @@ namespace
 {
 namespace fs = std::filesystem;
 
-std::string Slurp(const fs::path& p)
-{
-  std::ifstream f(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
-
-void Write(const fs::path& p, const std::string& bytes)
-{
-  std::ofstream(p, std::ios::binary) << bytes;
-}
+using mmrep::test::ReadBytes;
+using mmrep::test::WriteBytes;
 
 // Reads `path`: "" when it gives a valid surface, the error text when it throws.
 std::string Outcome(const fs::path& path)
@@ -74,17 +66,17 @@ TEST(SurfaceFuzz, TruncatedFlippedAndOverCountedFilesNeverCrash)
   std::string asciiPly = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
                          "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
                          "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 2 3\n";
-  Write(dir / "ascii.ply", asciiPly);
+  WriteBytes(dir / "ascii.ply", asciiPly);
   for (const fs::path& whole : {Sphere(dir, "sphere.ply"), Sphere(dir, "sphere.stl"), dir / "ascii.ply"})
   {
     ASSERT_EQ(Outcome(whole), "") << whole;
-    const std::string bytes = Slurp(whole);
+    const std::string bytes = ReadBytes(whole);
     // Truncated: 24 lengths from the first byte to one short of the whole.
     for (int cut = 0; cut < 24; ++cut)
     {
       const std::size_t length = bytes.size() * static_cast<std::size_t>(cut) / 24 + (cut == 23 ? 0 : 1);
       const fs::path p = dir / ("cut-" + std::to_string(cut) + whole.extension().string());
-      Write(p, bytes.substr(0, std::min(length, bytes.size() - 1)));
+      WriteBytes(p, bytes.substr(0, std::min(length, bytes.size() - 1)));
       EXPECT_NE(Outcome(p), "") << p << " of " << length << " bytes was read";
     }
     // Flipped bytes (every 37th past the first 100): valid or refused, never a crash.
@@ -93,18 +85,19 @@ TEST(SurfaceFuzz, TruncatedFlippedAndOverCountedFilesNeverCrash)
       std::string flipped = bytes;
       flipped[at] = static_cast<char>(~flipped[at]);
       const fs::path p = dir / ("flip" + whole.extension().string());
-      Write(p, flipped);
+      WriteBytes(p, flipped);
       Outcome(p);
     }
   }
   // Counts no file holds, and faces naming vertices that do not exist.
-  Write(dir / "huge.ply", std::regex_replace(asciiPly, std::regex("element vertex 4"), "element vertex 1000000000000"));
+  WriteBytes(dir / "huge.ply",
+             std::regex_replace(asciiPly, std::regex("element vertex 4"), "element vertex 1000000000000"));
   EXPECT_NE(Outcome(dir / "huge.ply").find("truncated PLY: the header declares more data"), std::string::npos);
-  Write(dir / "badface.ply", std::regex_replace(asciiPly, std::regex("3 0 2 3\n"), "3 0 2 9\n"));
+  WriteBytes(dir / "badface.ply", std::regex_replace(asciiPly, std::regex("3 0 2 3\n"), "3 0 2 9\n"));
   EXPECT_NE(Outcome(dir / "badface.ply").find("PLY face 1 refers to vertex 9"), std::string::npos);
-  std::string binary = Slurp(dir / "sphere.ply");
-  Write(dir / "hugebinary.ply",
-        std::regex_replace(binary, std::regex("element face [0-9]+"), "element face 999999999"));
+  std::string binary = ReadBytes(dir / "sphere.ply");
+  WriteBytes(dir / "hugebinary.ply",
+             std::regex_replace(binary, std::regex("element face [0-9]+"), "element face 999999999"));
   EXPECT_NE(Outcome(dir / "hugebinary.ply").find("truncated PLY"), std::string::npos);
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 60.0);
 }

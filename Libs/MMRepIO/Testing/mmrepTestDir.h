@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Copyright (c) 2026 MMRep developers (see LICENSE)
-// A fresh scratch folder per test inside the build tree.
+// A fresh scratch folder per test inside the build tree; whole files as bytes.
 #pragma once
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 namespace mmrep
@@ -21,6 +23,17 @@ inline std::filesystem::path ScratchDir()
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
+}
+
+inline std::string ReadBytes(const std::filesystem::path& p)
+{
+  std::ifstream f(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+}
+
+inline void WriteBytes(const std::filesystem::path& p, const std::string& bytes)
+{
+  std::ofstream(p, std::ios::binary) << bytes;
 }
 
 } // namespace test

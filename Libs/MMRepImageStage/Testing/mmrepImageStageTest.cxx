@@ -185,6 +185,36 @@ INSTANTIATE_TEST_SUITE_P(BundledCTs, ImageStageHead, ::testing::Values("cthead.n
                            return std::string(info.param).substr(0, std::string(info.param).find('.'));
                          });
 
+// A small head (a child's, or an adult CT shrunk 2× per axis with its spacing kept: one eighth
+// of the volume, about 470 ml) is found as a head, and measures what the full-size head does / 8.
+TEST(ImageStageHead, SmallHeadInASmallVolumeIsFound)
+{
+  auto ct = Sample("cthead.nrrd");
+  const auto t = mmrep::ChooseThresholds(ct, mmrep::ThresholdMode::Automatic, NaN, NaN);
+  mmrep::HeadSegmentationOptions o;
+  o.skinThreshold = t.skin;
+  o.boneThreshold = t.bone;
+  const auto full = mmrep::SegmentHead(ct, o);
+
+  auto small = mmrep::CTImage::New();
+  small->CopyInformation(ct);
+  mmrep::CTImage::RegionType r;
+  const auto size = ct->GetLargestPossibleRegion().GetSize();
+  r.SetSize({{size[0] / 2, size[1] / 2, size[2] / 2}});
+  small->SetRegions(r);
+  small->Allocate();
+  for (itk::IndexValueType k = 0; k < static_cast<itk::IndexValueType>(size[2] / 2); ++k)
+    for (itk::IndexValueType j = 0; j < static_cast<itk::IndexValueType>(size[1] / 2); ++j)
+      for (itk::IndexValueType i = 0; i < static_cast<itk::IndexValueType>(size[0] / 2); ++i)
+        small->SetPixel({{i, j, k}}, ct->GetPixel({{2 * i, 2 * j, 2 * k}}));
+  const auto head = mmrep::SegmentHead(small, o);
+  std::cout << "full head " << full.skinVolume / 1000 << " ml, shrunk " << head.skinVolume / 1000 << " ml\n";
+  EXPECT_LT(head.skinVolume, 5.0e5); // below the former fixed 500 ml bound
+  EXPECT_NEAR(head.skinVolume, full.skinVolume / 8, 0.1 * full.skinVolume / 8);
+  EXPECT_NEAR(head.boneVolume, full.boneVolume / 8, 0.2 * full.boneVolume / 8);
+  EXPECT_EQ(Components(head.skin, 1), 1u);
+}
+
 TEST(ImageStageHeadErrors, EmptySegmentationAndNoHead)
 {
   auto ct = Sample("headsq.nrrd");

@@ -53,4 +53,20 @@ TEST(ActivationRequest, JawOpeningWithMusclesAtRestStartsFromALargerIncrement)
   EXPECT_DOUBLE_EQ(FirstIncrement(atlas, resting), 0.1);
 }
 
+// Lip contact asked of a model without the mouth slit's sets: simulated without it, and said so.
+TEST(ActivationRequest, AModelWithoutTheMouthSlitIsWarnedAbout)
+{
+  const FEMesh atlas = ReadFEMesh(std::string(MMREP_SOURCE_DIR) + "/Resources/Atlas/FaceAtlas.vtu");
+  sim::DeckOptions deck;
+  deck.lipContact = true;
+  EXPECT_EQ(sim::LipContactWarning(atlas, deck, "atlas.vtu"), "");
+  FEMesh noSlit = atlas;
+  noSlit.nodeSets.erase("upperLipContact");
+  const std::string warning = sim::LipContactWarning(noSlit, deck, "old.vtu");
+  EXPECT_NE(warning.find("input model 'old.vtu' has no mouth slit"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("without lip contact"), std::string::npos) << warning;
+  deck.lipContact = false; // --noLipContact: nothing to warn about
+  EXPECT_EQ(sim::LipContactWarning(noSlit, deck, "old.vtu"), "");
+}
+
 } // namespace

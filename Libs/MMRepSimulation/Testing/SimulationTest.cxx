@@ -6,7 +6,14 @@
 
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -314,6 +321,71 @@ TEST(Simulation, MissingCalculiXIsReported)
     EXPECT_NE(std::string(e.what()).find("calculix-ccx"), std::string::npos) << e.what();
   }
   EXPECT_THROW(sim::FindCalculiX("/nonexistent/ccx"), std::runtime_error);
+}
+
+// Stand-ins for ccx that fail the way a solver or a machine does; each must be named for what it is.
+std::string FakeCalculiX(const std::string& name, const std::string& body)
+{
+  const std::filesystem::path path =
+    std::filesystem::temp_directory_path() / ("mmrep-fake-ccx-" + name + "-" + std::to_string(::getpid()));
+  std::ofstream(path) << "#!/bin/sh\n" << body << "\n";
+  std::filesystem::permissions(path, std::filesystem::perms::owner_all);
+  return path.string();
+}
+
+TEST(Simulation, CalculiXFaultsAreNamedApartFromANonConvergedSolve)
+{
+  const std::string deck = "*NODE\n1, 0, 0, 0\n";
+  sim::RunOptions options;
+  options.executable = FakeCalculiX("crash", "echo ' iteration 1'; kill -SEGV $$");
+  sim::CalculiXRun run = sim::RunCalculiX(deck, options);
+  EXPECT_EQ(run.outcome, sim::CalculiXOutcome::Crashed);
+  EXPECT_NE(sim::DescribeFailure(run).find("CalculiX crashed (Segmentation fault)"), std::string::npos)
+    << sim::DescribeFailure(run);
+  EXPECT_EQ(sim::DescribeFailure(run).find("converge"), std::string::npos) << sim::DescribeFailure(run);
+
+  options.executable = FakeCalculiX("silent", "exit 0");
+  run = sim::RunCalculiX(deck, options);
+  EXPECT_EQ(run.outcome, sim::CalculiXOutcome::NoResults);
+  EXPECT_NE(sim::DescribeFailure(run).find("ended without results (exit code 0)"), std::string::npos)
+    << sim::DescribeFailure(run);
+
+  options.executable = FakeCalculiX("deck", "echo ' *ERROR reading *MATERIAL: no density'; exit 201");
+  run = sim::RunCalculiX(deck, options);
+  EXPECT_EQ(run.outcome, sim::CalculiXOutcome::DeckRefused);
+  EXPECT_NE(sim::DescribeFailure(run).find("refused the model's input deck: *ERROR reading *MATERIAL"),
+            std::string::npos)
+    << sim::DescribeFailure(run);
+
+  options.executable =
+    FakeCalculiX("cutback", "echo ' increment size decreased to 0.1'; echo ' *ERROR: too many cutbacks'; exit 201");
+  run = sim::RunCalculiX(deck, options);
+  EXPECT_EQ(run.outcome, sim::CalculiXOutcome::DidNotConverge);
+  EXPECT_NE(sim::DescribeFailure(run).find("did not converge: *ERROR: too many cutbacks"), std::string::npos)
+    << sim::DescribeFailure(run);
+}
+
+// A solver that ignores SIGTERM is killed after the grace period when the run is aborted.
+TEST(Simulation, AHungCalculiXIsKilledWhenTheRunIsAborted)
+{
+  const auto pidFile = std::filesystem::temp_directory_path() / ("mmrep-hung-ccx-" + std::to_string(::getpid()));
+  std::filesystem::remove(pidFile);
+  sim::RunOptions options;
+  options.executable = FakeCalculiX("hung", "trap '' TERM; echo $$ > '" + pidFile.string() + "'; while :; do :; done");
+  options.progress = [&](double) {
+    if (std::filesystem::exists(pidFile) && std::filesystem::file_size(pidFile) > 0)
+      throw std::runtime_error("aborted");
+  };
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_THROW(sim::RunCalculiX("*NODE\n", options), std::runtime_error);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 30.0); // grace period 3 s; without the SIGKILL the call never returns
+  std::ifstream in(pidFile);
+  pid_t pid = 0;
+  ASSERT_TRUE(in >> pid);
+  EXPECT_NE(::kill(pid, 0), 0); // gone (and reaped: it was our child)
+  EXPECT_EQ(errno, ESRCH);
+  std::filesystem::remove(pidFile);
 }
 
 TEST(Simulation, FrdReaderParsesLongAndShortRecords)

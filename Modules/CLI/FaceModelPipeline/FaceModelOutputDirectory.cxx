@@ -19,7 +19,21 @@ FaceModelOutputDirectory::FaceModelOutputDirectory(const std::string& path)
   std::error_code ec;
   if (fs::exists(final_, ec) && !fs::is_directory(final_, ec))
     throw ModuleError(final_.string() + ": exists and is not a directory");
+  // The folder is replaced as a whole: never the current folder or one around it, never a folder
+  // of other files (only an earlier result, recognised by its report).
+  const fs::path absolute = fs::absolute(final_, ec).lexically_normal();
+  const fs::path around = fs::current_path(ec).lexically_relative(absolute);
+  if (!around.empty() && *around.begin() != "..")
+    throw ModuleError("--outputDirectory '" + final_.string() +
+                      "' is the current folder or holds it: name a new folder for the results (it is replaced "
+                      "as a whole)");
+  if (fs::is_directory(final_, ec) && !fs::is_empty(final_, ec) && !fs::exists(final_ / "report.md", ec))
+    throw ModuleError("--outputDirectory '" + final_.string() +
+                      "' holds other files (no report.md of an earlier result): name a new folder for the results "
+                      "(it is replaced as a whole)");
   const fs::path parent = final_.has_parent_path() ? final_.parent_path() : fs::path(".");
+  for (fs::path p = parent; !p.empty() && !fs::exists(p, ec); p = p.parent_path())
+    createdParent_ = p; // the outermost folder this run creates, removed again when nothing is published
   fs::create_directories(parent, ec);
   if (ec)
     throw ModuleError(parent.string() + ": cannot create the output directory's parent (" + ec.message() + ")");
@@ -30,6 +44,7 @@ FaceModelOutputDirectory::FaceModelOutputDirectory(const std::string& path)
   if (!fs::create_directory(staging_, ec) || ec)
     throw ModuleError(final_.string() + ": cannot create the output directory here (" +
                       (ec ? ec.message() : std::string("unknown error")) + ")");
+  mmrep::cli::NameStagedPath(staging_.string(), final_.string());
 }
 
 FaceModelOutputDirectory::~FaceModelOutputDirectory()
@@ -38,12 +53,19 @@ FaceModelOutputDirectory::~FaceModelOutputDirectory()
   {
     std::error_code ec;
     fs::remove_all(staging_, ec);
+    // Parents this run created, innermost first, while empty.
+    for (fs::path p = staging_.parent_path(); !createdParent_.empty() && !p.empty(); p = p.parent_path())
+    {
+      if (!fs::remove(p, ec) || p == createdParent_)
+        break;
+    }
   }
 }
 
 void FaceModelOutputDirectory::Commit()
 {
   // Inside a module run the folder appears only once every step succeeded (return parameters too).
+  mmrep::cli::CheckWrittenFolder(staging_.string(), final_.string());
   const fs::path final = final_, staging = staging_;
   committed_ = mmrep::cli::DeferPublication(
     final_.string(), [final, staging] { Publish(final, staging); },

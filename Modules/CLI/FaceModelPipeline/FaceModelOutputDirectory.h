@@ -22,5 +22,6 @@ public:
 private:
   static void Publish(const std::filesystem::path& final, const std::filesystem::path& staging);
   std::filesystem::path final_, staging_;
+  std::filesystem::path createdParent_; // outermost parent folder this run created (empty: none)
   bool committed_ = false;
 };

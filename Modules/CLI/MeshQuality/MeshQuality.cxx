@@ -61,7 +61,7 @@ void WriteMesh(const FEMesh& mesh, const std::vector<Measure>& measures, const s
     vtkNew<vtkXMLUnstructuredGridWriter> writer;
     writer->SetFileName(out.TempPath().c_str());
     writer->SetInputData(grid);
-    writer->SetDataModeToBinary();
+    writer->SetDataModeToAppended();
     if (writer->Write() != 1)
       throw cli::ModuleError("cannot write output mesh '" + path + "'");
     out.Commit();

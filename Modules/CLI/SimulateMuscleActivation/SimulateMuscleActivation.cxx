@@ -11,6 +11,7 @@
 #include "mmrepSnapshot.h"
 
 #include <cstdio>
+#include <iostream>
 #include <optional>
 #include <string>
 #include <utility>
@@ -78,6 +79,8 @@ MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
           RequireDisplay(png);
       return 0;
     });
+    if (const std::string warning = sim::LipContactWarning(mesh, options.deck, input); !warning.empty())
+      std::cerr << ctx.moduleName << ": warning: " << warning << std::endl;
     options.run.threads = static_cast<int>(ctx.args.Int("threads"));
     options.run.keepDirectory = ctx.args.Bool("keepJob");
     options.run.progress = [&ctx](double t) { ctx.progress.ReportRange(0.1, 0.8, t); };

@@ -24,6 +24,8 @@ double OptionalDouble(const mmrep::cli::Arguments& args, const std::string& name
   return args.Given(name) ? args.Double(name) : std::numeric_limits<double>::quiet_NaN();
 }
 
+constexpr long long kMinimumSurfaceVertices = 2000;
+
 void Run(mmrep::cli::ModuleContext& ctx)
 {
   const auto& args = ctx.args;
@@ -40,6 +42,12 @@ void Run(mmrep::cli::ModuleContext& ctx)
       throw mmrep::cli::ModuleError(args.String(name) + ": unknown surface format '" + ext +
                                     "' (use .vtp, .vtk, .stl, .ply or .obj)");
   }
+  // A decimated head surface must still hold the face's shape (a few mm between vertices at most).
+  for (const char* name : {"skinVertexCount", "skullVertexCount"})
+    if (args.Int(name) != 0 && args.Int(name) < kMinimumSurfaceVertices)
+      throw mmrep::cli::ModuleError("--" + std::string(name) + " " + std::to_string(args.Int(name)) +
+                                    " is too few vertices for a head surface: 0 keeps all, else at least " +
+                                    std::to_string(kMinimumSurfaceVertices));
   auto& skinOut = out(args.String("outputSkin"));
   auto& skullOut = out(args.String("outputSkull"));
   mmrep::cli::AtomicOutput* skinMaskOut = args.Given("skinMask") ? &out(args.String("skinMask")) : nullptr;
