@@ -123,7 +123,7 @@ void CheckControlPointConfiguration(const FEMesh& atlas, const std::vector<std::
       "the CT's orientation header looks wrong: the control points have the face looking to " +
       DirectionInWords(c.anterior) + " and its top pointing to " + DirectionInWords(c.superior) +
       " (an upright face in LPS looks to the front; turned " + Mm(std::max(c.turn, c.tilt)) +
-      " degrees): fix the CT's space directions, or pass --trustControlPoints");
+      " degrees): fix the CT's space directions, pass --reorientToFace to turn it upright, or --trustControlPoints");
   if (c.scale < bounds.minScale || c.scale > bounds.maxScale)
     throw std::invalid_argument("control points: they span " + Mm(c.scale) +
                                 " times the atlas's face (check coordinateUnits; a face is 0.6 to 1.6 times the "

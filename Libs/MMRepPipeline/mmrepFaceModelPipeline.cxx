@@ -217,6 +217,30 @@ void CheckInputs(const CTImage* ct, const std::vector<Landmark>& controlPoints, 
     CheckDistanceMapGrid(face, options.registration.mapMargin, options.registration.mapSpacing, "--mapSpacing");
 }
 
+// With --reorientToFace, a face the control points show turned: the CT's header and the points turned
+// upright (result.reorientation); otherwise the CT as it is.
+CTImage::ConstPointer Reoriented(const CTImage* ct, std::vector<Landmark>& controlPoints, const FEMesh& atlas,
+                                 const FaceModelOptions& options, FaceModelResult& result)
+{
+  if (!options.reorientToFace || ct == nullptr)
+    return ct;
+  std::vector<std::string> names;
+  const auto targets = MatchControlPoints(ct, controlPoints, atlas, names);
+  try
+  {
+    result.reorientation = FaceUprightRotation(atlas, targets, options.controlPointBounds.maxTurn);
+  }
+  catch (const std::invalid_argument&)
+  {
+    return ct; // points that place no face: CheckInputs says so
+  }
+  if (!result.reorientation.applied)
+    return ct;
+  for (auto& p : controlPoints)
+    p.position = result.reorientation.rotation * p.position;
+  return ReorientedCT(ct, result.reorientation.rotation).GetPointer();
+}
+
 // After the surfaces: the control points on the skin, and the face region inside the CT's extent
 // and imaged (not cut by the reconstruction circle). Refused unless partial models are allowed.
 NotImagedTissue CheckImagedFace(const CTImage* ct, const FEMesh& atlas, const FaceModelOptions& options,
@@ -252,10 +276,12 @@ NotImagedTissue CheckImagedFace(const CTImage* ct, const FEMesh& atlas, const Fa
 
 } // namespace
 
-FaceModelResult BuildFaceModel(const CTImage* ct, const std::vector<Landmark>& controlPoints, const FEMesh& atlas,
+FaceModelResult BuildFaceModel(const CTImage* storedCT, const std::vector<Landmark>& storedPoints, const FEMesh& atlas,
                                const FaceModelOptions& options)
 {
   FaceModelResult result;
+  std::vector<Landmark> controlPoints = storedPoints;
+  const CTImage::ConstPointer ct = Reoriented(storedCT, controlPoints, atlas, options, result);
   CheckInputs(ct, controlPoints, atlas, options, result);
   const auto t0 = Clock::now();
   const double weights[] = {0.25, 0.15, 0.35, 0.1, 0.1, 0.05}; // share of the time, per stage

@@ -12,6 +12,7 @@
 
 #include "mmrepAtlasRegistration.h"
 #include "mmrepControlPointPlausibility.h"
+#include "mmrepHeadReorientation.h"
 #include "mmrepCTThresholds.h"
 #include "mmrepMeshQuality.h"
 #include "mmrepMeshRepair.h"
@@ -52,6 +53,10 @@ struct FaceModelOptions
   // the registration unless the user vouches for them.
   ControlPointBounds controlPointBounds;
   bool trustControlPoints = false;
+  // A face that the control points show turned more than the plausibility bound (a wrong orientation
+  // header) is turned upright by quarter turns of the CT's header (mmrepHeadReorientation.h) instead
+  // of being refused; the model is then in the corrected frame (FaceModelResult::reorientation).
+  bool reorientToFace = false;
   // A model whose own accuracy (fitted half, after the repair) exceeds these is a poor fit
   // (FaceModelResult::poorFit): the module then publishes nothing unless told to.
   double poorFitSkin = 1.0, poorFitSkull = 1.5, poorFitControlPoint = 2.0; // mm
@@ -92,6 +97,7 @@ struct FaceModelResult
   std::string fieldOfViewMissing;        // the part of the face the CT misses (partial model), or empty
   std::string notImaged;                 // "the nose tip is outside the scanner's field of view ...", or empty
   std::size_t notImagedNodes = 0;        // skin nodes of the model on the cut (node set `notImaged`)
+  HeadReorientation reorientation;       // applied: the CT's header and the control points were turned so
   std::string poorFit;                   // "fitted skull 2.9 mm mean (at most 1.5)", or empty for a good fit
   std::vector<ModelAccuracy> accuracy;   // after R, after Q∘R, after repair
   // Which part of the atlas was fitted to the speaker: "left half" (half-face: the right half is its

@@ -64,6 +64,13 @@ std::string FaceModelReportJson(const FaceModelResult& r, const FaceModelReportI
                       {"notImaged", r.notImaged},
                       {"notImagedNodes", r.notImagedNodes}};
   j["fit"] = {{"poor", !r.poorFit.empty()}, {"why", r.poorFit}};
+  if (r.reorientation.applied)
+  {
+    nlohmann::json rows = nlohmann::json::array();
+    for (int i = 0; i < 3; ++i)
+      rows.push_back({r.reorientation.rotation(i, 0), r.reorientation.rotation(i, 1), r.reorientation.rotation(i, 2)});
+    j["reorientation"] = {{"storedFace", r.reorientation.before}, {"rotation", rows}};
+  }
   j["thresholds"] = {{"skin", r.thresholds.skin}, {"bone", r.thresholds.bone}, {"source", r.thresholds.source}};
   j["surfaces"] = {{"skinVertices", r.skin->GetNumberOfPoints()},
                    {"skinTriangles", r.skin->GetNumberOfPolys()},
@@ -142,6 +149,8 @@ std::string FaceModelReportMarkdown(const FaceModelResult& r, const FaceModelRep
        << " skin nodes there are in node set `notImaged`.\n\n";
   if (!r.poorFit.empty())
     md << "**Poor fit** (accepted by the user): " << r.poorFit << ".\n\n";
+  if (r.reorientation.applied)
+    md << "**Reoriented**: " << ReorientationInWords(r.reorientation) << ".\n\n";
 
   md << "## Surface accuracy (mm)\n\n"
      << "Fitted: **" << r.fitted

@@ -72,17 +72,23 @@ void WriteWrongControlPoints(const fs::path& d)
 // degrees about the vertical axis (its control points turned with it: the face then looks to the
 // patient's left), and upside down (rotated 180 degrees about the left axis, with the control
 // points of the upright head). Both rotate about the volume's centre, so the extent stays put.
+// The centre of the bundled CT's volume, which the reoriented fixtures turn about.
+Eigen::Vector3d VolumeCentre(const mmrep::CTImage* ct)
+{
+  const auto size = ct->GetLargestPossibleRegion().GetSize();
+  itk::ContinuousIndex<double, 3> middle;
+  for (unsigned a = 0; a < 3; ++a)
+    middle[a] = 0.5 * (static_cast<double>(size[a]) - 1.0);
+  mmrep::CTImage::PointType c;
+  ct->TransformContinuousIndexToPhysicalPoint(middle, c);
+  return {c[0], c[1], c[2]};
+}
+
 void WriteReorientedHeads(const fs::path& d)
 {
   auto rotated = [&](const Eigen::Matrix3d& r, const std::string& name) {
     auto ct = mmrep::ReadCTImage(kSampleData + "cthead.nrrd");
-    const auto size = ct->GetLargestPossibleRegion().GetSize();
-    itk::ContinuousIndex<double, 3> middle;
-    for (unsigned a = 0; a < 3; ++a)
-      middle[a] = 0.5 * (static_cast<double>(size[a]) - 1.0);
-    mmrep::CTImage::PointType c;
-    ct->TransformContinuousIndexToPhysicalPoint(middle, c);
-    const Eigen::Vector3d centre(c[0], c[1], c[2]);
+    const Eigen::Vector3d centre = VolumeCentre(ct);
     auto move = [&](const Eigen::Vector3d& p) -> Eigen::Vector3d { return centre + r * (p - centre); };
     Eigen::Matrix3d direction;
     for (unsigned i = 0; i < 3; ++i)
@@ -487,6 +493,61 @@ TEST(PartialFieldOfView, ModelBuiltMissingRegionReported)
   // A real model: the atlas's mesh, read back.
   const auto model = mmrep::ReadFEMesh((dir / "speaker" / "model.vtu").string());
   EXPECT_EQ(model.elements.size(), mmrep::ReadFEMesh(kAtlasData + "FaceAtlas.vtu").elements.size());
+}
+
+// The bundled CT stored turned 90 degrees about the vertical by its header ({turnedct}, its points turned
+// with it): refused by default, put upright with --reorientToFace. The corrected frame is the stored one
+// turned back (R = the turn's inverse), so the model is the upright CT's model moved by R·c − c (c: the
+// centre the fixture turned about), node for node.
+TEST(Orientation, ReorientToFaceBuildsTheUprightModel)
+{
+  ScratchDirectory scratch("reorient");
+  const fs::path dir = scratch.path();
+  const std::string module = Quote(std::string(MMREP_BINARY_DIR) + "/bin/FaceModelPipeline");
+  const ModuleRun turned =
+    RunCommand(module + " " + Quote((Fixtures() / "turned.nrrd").string()) + " " +
+                 Quote((Fixtures() / "turned.mrk.json").string()) +
+                 " --noPictures --reorientToFace --outputDirectory " + Quote((dir / "turned").string()),
+               dir / "turned.err");
+  ASSERT_EQ(turned.exitCode, 0) << turned.err;
+  ASSERT_EQ(turned.ErrLines().size(), 1u) << turned.err;
+  EXPECT_NE(turned.err.find("warning: the CT's orientation header was corrected (--reorientToFace): the face was "
+                            "looking to the patient's left, its top to the top"),
+            std::string::npos)
+    << turned.err;
+  const ModuleRun upright = RunCommand(module + " " + Quote(kSampleData + "cthead.nrrd") + " " +
+                                         Quote(kSampleData + "cthead.ControlPoints.mrk.json") +
+                                         " --noPictures --outputDirectory " + Quote((dir / "upright").string()),
+                                       dir / "upright.err");
+  ASSERT_EQ(upright.exitCode, 0) << upright.err;
+  const auto report = nlohmann::json::parse(Slurp(dir / "turned" / "report.json"));
+  const Eigen::Matrix3d expected = (Eigen::Matrix3d() << 0, 1, 0, -1, 0, 0, 0, 0, 1).finished();
+  Eigen::Matrix3d r;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      r(i, j) = report.at("reorientation").at("rotation").at(i).at(j).get<double>();
+  EXPECT_TRUE(r.isApprox(expected, 1e-12)) << r;
+  // The fixture's centre of turning, as it computed it.
+  const Eigen::Vector3d centre = VolumeCentre(mmrep::ReadCTImage(kSampleData + "cthead.nrrd"));
+  const Eigen::Vector3d shift = expected * centre - centre;
+  const auto a = mmrep::ReadFEMesh((dir / "turned" / "model.vtu").string());
+  const auto b = mmrep::ReadFEMesh((dir / "upright" / "model.vtu").string());
+  ASSERT_EQ(a.nodes.size(), b.nodes.size());
+  // Not bytes: the distance maps' grids are anchored in absolute coordinates, so they sample the moved
+  // head at other points; the model agrees to far below the fit's own error nearly everywhere.
+  std::vector<double> d;
+  for (std::size_t i = 0; i < a.nodes.size(); ++i)
+    d.push_back((a.nodes[i] - shift - b.nodes[i]).norm());
+  std::sort(d.begin(), d.end());
+  double sum = 0;
+  for (double x : d)
+    sum += x;
+  const double mean = sum / static_cast<double>(d.size()), p95 = d[d.size() * 95 / 100];
+  std::cout << "reoriented model vs upright: mean " << mean << " mm, 95th percentile " << p95 << " mm, max " << d.back()
+            << " mm\n";
+  EXPECT_LT(mean, 0.05);
+  EXPECT_LT(p95, 0.1);
+  EXPECT_LT(d.back(), 2.0);
 }
 
 // The Visible Human Female CT, whose nose tip lies outside the reconstruction circle, as a partial

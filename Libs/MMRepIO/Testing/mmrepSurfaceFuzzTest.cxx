@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Copyright (c) 2026 MMRep developers (see LICENSE)
-// Damaged PLY and STL files against ReadSurface: truncated at many lengths, bytes flipped, counts
+// Damaged PLY, STL and VTK XML files against ReadSurface: truncated at many lengths, bytes flipped, counts
 // that no file holds, faces naming vertices that do not exist. Each either reads as a valid
 // surface (every face index within the points) or throws std::runtime_error naming the file; none
 // may crash this process or take long (vtkPLYReader crashed on truncated files before the checks).
@@ -87,6 +87,23 @@ TEST(SurfaceFuzz, TruncatedFlippedAndOverCountedFilesNeverCrash)
       const fs::path p = dir / ("flip" + whole.extension().string());
       WriteBytes(p, flipped);
       Outcome(p);
+    }
+  }
+  // VTK XML (.vtp, appended and compressed as the project writes it): cut or flipped, read as a valid
+  // surface or refused; a cut in the closing tags alone may still hold the whole surface.
+  {
+    const fs::path whole = Sphere(dir, "sphere.vtp");
+    const std::string bytes = ReadBytes(whole);
+    for (int k = 0; k < 40; ++k)
+    {
+      std::string flipped = bytes;
+      flipped[bytes.size() * static_cast<std::size_t>(k) / 40] ^= 0x5a;
+      WriteBytes(dir / "flip.vtp", flipped);
+      Outcome(dir / "flip.vtp");
+      WriteBytes(dir / "cut.vtp", bytes.substr(0, bytes.size() * static_cast<std::size_t>(k) / 40));
+      const bool closingTagsOnly = bytes.size() * static_cast<std::size_t>(k) / 40 > bytes.rfind("</AppendedData>");
+      if (!closingTagsOnly)
+        EXPECT_NE(Outcome(dir / "cut.vtp"), "") << "a .vtp cut at " << k << "/40 was read";
     }
   }
   // Counts no file holds, and faces naming vertices that do not exist.

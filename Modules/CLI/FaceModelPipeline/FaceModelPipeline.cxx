@@ -67,6 +67,7 @@ void Run(mmrep::cli::ModuleContext& ctx)
   options.repairThreshold = qualityThreshold;
   options.allowPartialFieldOfView = args.Bool("allowPartialFieldOfView");
   options.trustControlPoints = args.Bool("trustControlPoints");
+  options.reorientToFace = args.Bool("reorientToFace");
   std::string lastStage;
   options.progress = [&](const std::string& stage, double f) {
     if (stage != lastStage)
@@ -89,6 +90,8 @@ void Run(mmrep::cli::ModuleContext& ctx)
     std::cerr << ctx.moduleName << ": warning: partial model: " << what
               << "; there the model is not fitted to the speaker (report.md)" << std::endl;
   }
+  if (result.reorientation.applied)
+    std::cerr << ctx.moduleName << ": warning: " << mmrep::ReorientationInWords(result.reorientation) << std::endl;
   const bool acceptPoorFit = args.Bool("acceptPoorFit");
   if (!result.poorFit.empty() && acceptPoorFit)
     std::cerr << ctx.moduleName << ": warning: poor fit accepted: " << result.poorFit << " (report.md)" << std::endl;
