@@ -183,6 +183,7 @@ SymmetryPlaneResult EstimateSubjectPlane(vtkPolyData* skin, const FaceModelOptio
 LocalRefinementOptions RefinementOptionsFor(const FaceModelOptions& options, const Plane& plane)
 {
   auto q = options.refinement;
+  q.elementQualityFloor = options.registration.elementQualityFloor; // one floor for R and Q
   q.symmetric = options.registration.symmetric;
   q.halfFace = options.registration.symmetric && options.registration.halfFace;
   q.plane = plane;

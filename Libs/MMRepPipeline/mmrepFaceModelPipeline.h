@@ -39,7 +39,7 @@ struct FaceModelOptions
   SymmetryPlaneOptions plane;            // mid-sagittal plane of the skin
   AtlasRegistrationOptions registration; // R (progress is set by the pipeline)
   bool refine = true;                    // Q over the lips
-  LocalRefinementOptions refinement;     // Q (plane, symmetry and progress set by the pipeline)
+  LocalRefinementOptions refinement;     // Q (plane, symmetry, progress and R's quality floor set by the pipeline)
   double repairThreshold = 0.3;          // scaled Jacobian every element must reach
   int repairSweeps = 40;                 // a model that needs more is better re-registered than ground on
   double fieldOfViewMargin = 5;          // mm the CT must extend past the face region (mmrepFieldOfView.h)

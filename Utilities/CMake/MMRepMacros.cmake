@@ -70,6 +70,7 @@ function(mmrep_add_gtest name)
     MMREP_SAMPLE_DATA="${MMREP_SAMPLE_DATA}" MMREP_TEST_DATA="${MMREP_TEST_DATA}")
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/Testing/Utilities)
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/tests)
-  gtest_discover_tests(${name} DISCOVERY_MODE PRE_TEST
+  # NO_PRETTY_VALUES: names from the cases' own name generators, not "# GetParam() = <bytes>".
+  gtest_discover_tests(${name} DISCOVERY_MODE PRE_TEST NO_PRETTY_VALUES NO_PRETTY_TYPES
     WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR} PROPERTIES TIMEOUT 600)
 endfunction()

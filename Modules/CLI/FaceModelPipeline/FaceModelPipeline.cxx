@@ -60,7 +60,6 @@ void Run(mmrep::cli::ModuleContext& ctx)
   options.registration.controlPointWeight = args.Double("controlPointWeight");
   options.registration.elementQualityFloor = args.Double("elementQualityFloor");
   options.registration.tieWeight = args.Double("tieWeight");
-  options.refinement.elementQualityFloor = options.registration.elementQualityFloor;
   mmrep::SetSymmetryMode(options.registration, args.String("symmetry"));
   options.refine = !args.Bool("noRefinement");
   options.refinement.spacing = args.Double("lipsSpacing");

@@ -68,7 +68,8 @@ TEST_P(SkinSkullSurfacesOnCT, OneClosedSkinOneClosedSkullAndAPicture)
   EXPECT_GT(std::filesystem::file_size(picture), 10000u);
 }
 
-INSTANTIATE_TEST_SUITE_P(BundledCTs, SkinSkullSurfacesOnCT, ::testing::Values("cthead", "headsq"));
+INSTANTIATE_TEST_SUITE_P(BundledCTs, SkinSkullSurfacesOnCT, ::testing::Values("cthead", "headsq"),
+                         [](const auto& info) { return std::string(info.param); });
 
 TEST(SkinSkullSurfaces, DicomSeriesGivesTheSameSurfacesAsTheVolume)
 {
