@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Copyright (c) 2026 MMRep developers (see LICENSE)
-// The speaker model as one ITK/VTK pipeline (README: "C++ pipeline API"):
+// The speaker model as one ITK/VTK pipeline (docs/cpp-api.md, "C++ pipeline API"):
 //   CT reader (itk::ImageFileReader) -> SubjectSurfacesFilter -> AtlasRegistrationFilter (plane + R)
 //   -> LipsRefinementFilter (Q) -> MeshRepairFilter -> MuscleInferenceFilter (through Q∘R, an
 //   itk::CompositeTransform) -> vtkXMLUnstructuredGridWriter,

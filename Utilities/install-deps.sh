@@ -3,9 +3,11 @@
 # Copyright (c) 2026 MMRep developers (see LICENSE)
 # Installs MMRep's build and test dependencies from Debian 12 packages.
 # Idempotent: does nothing (no apt-get update either) when every package is already installed.
+#   bash Utilities/install-deps.sh          # everything: build, demo, tests
+#   bash Utilities/install-deps.sh --demo   # only what the demo builds and runs (no test tools)
 set -euo pipefail
 
-PACKAGES=(
+DEMO_PACKAGES=(
   cmake g++ make pkg-config
   libinsighttoolkit5-dev   # ITK 5.2: images, filters, DICOM (GDCM)
   libvtk9-dev              # VTK 9.1: surface and mesh file formats, rendering
@@ -14,12 +16,20 @@ PACKAGES=(
   nlohmann-json3-dev       # Slicer markups (.mrk.json), reports
   libtclap-dev             # command-line parsing (as Slicer's GenerateCLP)
   zlib1g-dev               # the decompressed length of .nii.gz volumes, checked before reading
+  calculix-ccx             # the muscle-activation solver
+  xvfb xauth libx11-dev    # off-screen X server for VTK pictures, X connection check
+)
+TEST_PACKAGES=(
   libgtest-dev             # unit tests
   libxml2-utils            # xmllint: module descriptions against the Slicer schema
-  calculix-ccx gmsh        # real FE tools that read our exports in the tests
-  xvfb xauth libx11-dev     # off-screen X server for VTK pictures, X connection check
-  clang-format pmccabe      # tree hygiene tests: formatting, function lengths
+  gmsh                     # a real FE tool that reads our exports in the tests
+  clang-format pmccabe     # tree hygiene tests: formatting, function lengths
 )
+case "${1:-}" in
+  --demo) PACKAGES=("${DEMO_PACKAGES[@]}") ;;
+  "") PACKAGES=("${DEMO_PACKAGES[@]}" "${TEST_PACKAGES[@]}") ;;
+  *) echo "usage: bash Utilities/install-deps.sh [--demo]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${PACKAGES[@]}"; do

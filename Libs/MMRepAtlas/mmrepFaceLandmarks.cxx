@@ -214,7 +214,6 @@ FaceLandmarkSet DetectFaceLandmarks(const SurfaceRays& skin, const SurfaceRays& 
 {
   FaceLandmarkSet lm;
   // --- Mid-sagittal profile.
-  const double step = 0.25 * kDeg;
   std::vector<FacePoint> profile;
   std::vector<double> v;
   for (double a = -75.0; a <= 65.0 + 1e-9; a += 0.25)
@@ -222,7 +221,6 @@ FaceLandmarkSet DetectFaceLandmarks(const SurfaceRays& skin, const SurfaceRays& 
     profile.push_back(SkinHit(skin, centre, 0, a * kDeg));
     v.push_back(profile.back().local.y());
   }
-  (void)step;
   // Nose tip: most anterior profile point within +-35 deg of the centre's level.
   int prn = -1;
   for (int i = 0; i < static_cast<int>(v.size()); ++i)

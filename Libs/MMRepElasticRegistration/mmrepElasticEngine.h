@@ -22,7 +22,7 @@ class Engine
 {
 public:
   Engine(ElasticTransform& t, ElasticProblem& p, const ElasticOptimizerOptions& o)
-      : transform_(t), problem_(p), options_(o), frameToWorld_(t.frameRotation.transpose())
+      : transform_(t), problem_(p), options_(o)
   {
     // Hexahedra of each point (CSR) and their current quality, for the mesh guard.
     const std::size_t n = problem_.points.size();
@@ -477,7 +477,6 @@ private:
   ElasticTransform& transform_;
   ElasticProblem& problem_;
   const ElasticOptimizerOptions& options_;
-  Eigen::Matrix3d frameToWorld_;
   ElasticLevel* level_ = nullptr;
   long long dim_ = 0;
   std::unordered_map<long long, std::vector<int>> cells_;

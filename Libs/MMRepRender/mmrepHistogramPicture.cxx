@@ -2,6 +2,7 @@
 // Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepHistogramPicture.h"
 
+#include "mmrepPictureText.h"
 #include "mmrepSnapshot.h"
 
 #include <vtkActor2D.h>
@@ -47,6 +48,7 @@ namespace
 {
 // Frame of one panel in normalized viewport coordinates.
 constexpr double kLeft = 0.12, kRight = 0.96, kBottom = 0.14, kTop = 0.86;
+constexpr int kPanelWidth = 560, kPanelHeight = 420; // pixels
 
 void AddText(vtkRenderer* renderer, const std::string& text, double x, double y, int size, int justification)
 {
@@ -131,7 +133,7 @@ void AddPanel(vtkRenderer* renderer, const HistogramPanel& panel, double thresho
   char title[256];
   std::snprintf(title, sizeof title, "%s: %zu elements, %zu below %.2f", panel.title.c_str(), panel.values.size(),
                 below, threshold);
-  AddText(renderer, title, 0.5, 0.92, 16, VTK_TEXT_CENTERED);
+  renderer->AddActor2D(MakeViewTitle(title, kPanelWidth, kPanelHeight, 16, true));
   AddText(renderer, "scaled Jacobian", 0.5, 0.01, 14, VTK_TEXT_CENTERED);
 }
 } // namespace
@@ -151,8 +153,8 @@ void WriteHistogramPNG(const std::vector<HistogramPanel>& panels, double thresho
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0);
-  const int width = 560, height = 420, n = static_cast<int>(panels.size());
-  window->SetSize(width * n, height);
+  const int n = static_cast<int>(panels.size());
+  window->SetSize(kPanelWidth * n, kPanelHeight);
   for (int i = 0; i < n; ++i)
   {
     vtkNew<vtkRenderer> renderer;

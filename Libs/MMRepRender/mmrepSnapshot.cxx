@@ -2,6 +2,8 @@
 // Copyright (c) 2026 MMRep developers (see LICENSE)
 #include "mmrepSnapshot.h"
 
+#include "mmrepPictureText.h"
+
 #include "mmrepDiskSpace.h"
 #include "mmrepFatalError.h"
 #include "mmrepSilencedCStandardError.h"
@@ -229,13 +231,9 @@ void WriteSnapshot(const std::vector<SnapshotLayer>& layers, const SnapshotOptio
     else
       renderer->ResetCamera();
 
-    vtkNew<vtkTextActor> label;
-    label->SetInput(
-      (i == 0 && !o.title.empty() ? o.title + " - " : std::string()).append(ViewName(o.views[i])).c_str());
-    label->GetTextProperty()->SetColor(0, 0, 0);
-    label->GetTextProperty()->SetFontSize(16);
-    label->SetDisplayPosition(8, o.viewHeight - 24);
-    renderer->AddActor2D(label);
+    const std::string label =
+      (i == 0 && !o.title.empty() ? o.title + " - " : std::string()).append(ViewName(o.views[i]));
+    renderer->AddActor2D(MakeViewTitle(label, o.viewWidth, o.viewHeight));
     window->AddRenderer(renderer);
   }
   WriteWindowPNG(window, pngPath);

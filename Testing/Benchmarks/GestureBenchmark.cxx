@@ -3,7 +3,7 @@
 // GestureBenchmark: issue 14's targets for the speech gestures, measured in one run on the default
 // speaker model of the bundled CT (FaceModelPipeline --halfModel), side by side with the targets:
 //   figures    smile, round, open and close on the full model: every figure against its target and the
-//              published range the README cites;
+//              published range docs/figures.md cites;
 //   timing     ccx wall time of each solve (target <= 60 s on 2 cores) and the half model's time
 //              against the full model's (target <= 0.6), with the half/full landmark agreement (<= 5 %);
 //   --levers   the rounding again with each lever measured for it (forces of ArtiSynth's face model,

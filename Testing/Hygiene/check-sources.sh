@@ -3,8 +3,9 @@
 # Copyright (c) 2026 MMRep developers (see LICENSE)
 # Tree hygiene (issue 17): every C++/CMake/shell/Python source carries the licence header, the C++ is
 # formatted with the top-level .clang-format, and the size limits hold (library files <= 500 lines
-# aside from generated tables, module .cxx files <= 150 lines, library functions <= 120 lines).
-#   check-sources.sh <source-dir> licence|format|sizes|functions
+# aside from generated tables, module .cxx files <= 150 lines, library functions <= 120 lines); the
+# README stays a door (<= 15 kB) and every relative link of the Markdown files leads somewhere.
+#   check-sources.sh <source-dir> licence|format|sizes|functions|docs
 set -euo pipefail
 root="$1"
 cd "$root"
@@ -44,6 +45,23 @@ case "$2" in
     done < <(files 'Libs/*.h' 'Libs/*.hxx' 'Libs/*.cxx' | grep -v -e '/Testing/' -e '/test/' -e 'Tables.h$' |
              xargs pmccabe 2>/dev/null | awk '$5 > 120 { print $5 " lines: " $6 " " $7 }')
     ;;
-  *) echo "usage: check-sources.sh <source-dir> licence|format|sizes|functions"; exit 2 ;;
+  docs)
+    n=$(wc -c < README.md); [ "$n" -le 15000 ] || { echo "README.md is $n bytes (at most 15000: details go to docs/)"; status=1; }
+    # GitHub's anchor of a heading: lower case, punctuation dropped, spaces to hyphens.
+    anchors() { grep -E '^#+ ' "$1" | sed -E 's/^#+ //' | tr '[:upper:]' '[:lower:]' | sed -E 's/[^a-z0-9 _-]//g; s/ /-/g'; }
+    while read -r f; do
+      while read -r target; do
+        case "$target" in http*|mailto:*) continue ;; esac
+        path="${target%%#*}"; anchor=""
+        [ "$path" != "$target" ] && anchor="${target#*#}"
+        dest="$f"; [ -n "$path" ] && dest="$(dirname "$f")/$path"
+        if [ ! -e "$dest" ]; then echo "broken link in $f: $target"; status=1; continue; fi
+        if [ -n "$anchor" ] && ! anchors "$dest" | grep -qx -- "$anchor"; then
+          echo "link in $f to a missing heading: $target"; status=1
+        fi
+      done < <(grep -oE '\]\([^) ]+\)' "$f" | sed -E 's/^\]\(//; s/\)$//')
+    done < <(files '*.md')
+    ;;
+  *) echo "usage: check-sources.sh <source-dir> licence|format|sizes|functions|docs"; exit 2 ;;
 esac
 exit $status

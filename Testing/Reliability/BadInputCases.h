@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Copyright (c) 2026 MMRep developers (see LICENSE)
-// The bad-input table: every module, every class of bad input (README "Reliability").
+// The bad-input table: every module, every class of bad input (docs/reliability.md).
 // Placeholders: {d} the case's folder; fixtures copied into it before the run:
 //   {ct} {points} CT and control points (Resources/SampleData/cthead.*)
 //   {atlas} {landmarks} {skin} {skull} the atlas mesh, its landmarks and surfaces (Resources/Atlas)

@@ -30,10 +30,6 @@ void Run(mmrep::cli::ModuleContext& ctx)
   if (pictures)
     mmrep::RequireDisplay(args.String("outputDirectory") + "/*.png (or pass --noPictures)");
   const double qualityThreshold = args.Double("qualityThreshold");
-  if (!(qualityThreshold >= -1 && qualityThreshold <= 1))
-    throw ModuleError("--qualityThreshold must lie in [-1, 1]");
-  if (!(args.Double("transformSpacing") > 0))
-    throw ModuleError("--transformSpacing must be > 0");
   if (args.Bool("halfModel") && args.String("symmetry") == "full")
     throw ModuleError("--halfModel needs a symmetric model: use --symmetry half-face (the default) or averaged");
 
