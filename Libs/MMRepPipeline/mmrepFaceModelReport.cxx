@@ -101,12 +101,14 @@ std::string FaceModelReportJson(const FaceModelResult& r, const FaceModelReportI
                    {{"minScaledJacobian", Number(r.repair.minScaledJacobianBefore)},
                     {"meanScaledJacobian", Number(r.repair.meanScaledJacobianBefore)},
                     {"inverted", r.repair.invertedBefore},
-                    {"belowThreshold", r.repair.belowThresholdBefore}}},
+                    {"belowThreshold", r.repair.belowThresholdBefore},
+                    {"notCertifiedInside", r.repair.notCertifiedBefore}}},
                   {"afterRepair",
                    {{"minScaledJacobian", Number(r.repair.minScaledJacobianAfter)},
                     {"meanScaledJacobian", Number(r.repair.meanScaledJacobianAfter)},
                     {"inverted", r.repair.invertedAfter},
-                    {"belowThreshold", r.repair.belowThresholdAfter}}},
+                    {"belowThreshold", r.repair.belowThresholdAfter},
+                    {"notCertifiedInside", r.repair.notCertifiedAfter}}},
                   {"repairSeconds", r.repair.seconds},
                   {"repairSucceeded", r.repair.success},
                   {"movedNodes", r.repair.movedNodes},
@@ -208,13 +210,15 @@ std::string FaceModelReportMarkdown(const FaceModelResult& r, const FaceModelRep
 
   md << "## Element quality (scaled Jacobian)\n\n"
      << "| Mesh | Elements | Min | Mean | Inverted | Below " << F(in.repairThreshold, 2)
-     << " |\n|---|---|---|---|---|---|\n"
+     << " | Not valid inside |\n|---|---|---|---|---|---|---|\n"
      << "| before repair (Q∘R) | " << r.model.SolidElementCount() << " | " << F(r.repair.minScaledJacobianBefore)
      << " | " << F(r.repair.meanScaledJacobianBefore) << " | " << r.repair.invertedBefore << " | "
-     << r.repair.belowThresholdBefore << " |\n"
+     << r.repair.belowThresholdBefore << " | " << r.repair.notCertifiedBefore << " |\n"
      << "| repaired model | " << r.model.SolidElementCount() << " | " << F(r.repair.minScaledJacobianAfter) << " | "
      << F(r.repair.meanScaledJacobianAfter) << " | " << r.repair.invertedAfter << " | " << r.repair.belowThresholdAfter
-     << " |\n\n"
+     << " | " << r.repair.notCertifiedAfter << " |\n\n"
+     << "\"Not valid inside\": elements whose Jacobian determinant is not proved positive over the whole element "
+        "(Bézier bounds), although the scaled Jacobian measures only the corners.\n\n"
      << "Repair " << (r.repair.success ? "succeeded" : "**did not reach the threshold**") << ": " << r.repair.movedNodes
      << " nodes moved, " << r.repair.movedSurfaceNodes << " of them on the skin or skull (kept on the surfaces).\n\n";
 

@@ -68,9 +68,13 @@ SimilarityTransform Estimate(const std::vector<Eigen::Vector3d>& source, const s
     throw std::invalid_argument("paired-point alignment: a point coordinate is not finite");
 
   // Collinear (or coincident) source points leave a rotation about their line free.
+  // Singular values of the centred points from their 3 x 3 scatter matrix (a fixed-size SVD; the 3 x n
+  // one instantiates Eigen's dynamic QR preconditioners, slow to compile). The square roots are good to
+  // about 1e-8 of the largest, hence the 1e-6 ratio.
   const Eigen::Matrix3Xd centred = src.colwise() - src.rowwise().mean();
-  const Eigen::Vector3d sv = Eigen::JacobiSVD<Eigen::Matrix3Xd>(centred).singularValues();
-  if (!(sv(1) > 1e-9 * std::max(sv(0), 1e-300)) || sv(0) <= 0)
+  const Eigen::Matrix3d scatter = centred * centred.transpose();
+  const Eigen::Vector3d sv = Eigen::JacobiSVD<Eigen::Matrix3d>(scatter).singularValues().cwiseSqrt();
+  if (!(sv(1) > 1e-6 * std::max(sv(0), 1e-300)) || sv(0) <= 0)
     throw std::invalid_argument("paired-point alignment: source points are collinear or coincident");
 
   const Eigen::Matrix4d m = Eigen::umeyama(src, dst, withScale);

@@ -13,6 +13,8 @@
 // the threshold; each phase first moves inner nodes only, then also surface nodes.
 #include "mmrepMeshRepair.h"
 
+#include "mmrepCertifiedJacobian.h"
+
 #include "mmrepEmbedding.h"
 #include "mmrepIdealPositions.h"
 #include "mmrepLipContact.h"
@@ -423,6 +425,9 @@ RepairReport RepairMesh(FEMesh& mesh, const RepairOptions& options)
   report.meanScaledJacobianBefore = before.mean;
   report.invertedBefore = before.inverted;
   report.belowThresholdBefore = before.belowThreshold;
+  const quality::CertificationSummary certifiedBefore = quality::CertifyMesh(mesh);
+  report.notCertifiedBefore = certifiedBefore.NotValid();
+  report.certifiedMinimumBefore = certifiedBefore.minimumLower;
 
   quality::QualitySummary after = before;
   if (before.belowThreshold > 0 || before.inverted > 0) // a valid mesh is left untouched
@@ -438,6 +443,9 @@ RepairReport RepairMesh(FEMesh& mesh, const RepairOptions& options)
   report.invertedAfter = after.inverted;
   report.belowThresholdAfter = after.belowThreshold;
   report.success = after.belowThreshold == 0 && after.inverted == 0;
+  const quality::CertificationSummary certifiedAfter = quality::CertifyMesh(mesh);
+  report.notCertifiedAfter = certifiedAfter.NotValid();
+  report.certifiedMinimumAfter = certifiedAfter.minimumLower;
 
   std::vector<std::pair<double, std::size_t>> failed;
   const std::vector<double> values = quality::ComputeQuality(mesh, quality::Measure::ScaledJacobian, sequential);

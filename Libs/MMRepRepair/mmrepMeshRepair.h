@@ -42,6 +42,11 @@ struct RepairReport
   double meanScaledJacobianBefore = 0, meanScaledJacobianAfter = 0; // (as quality::SummarizeScaledJacobian)
   std::size_t invertedBefore = 0, invertedAfter = 0;
   std::size_t belowThresholdBefore = 0, belowThresholdAfter = 0; // degenerate elements included
+  // Validity inside the elements (quality::CertifyMesh), reported beside the corner measures: elements
+  // not proved valid everywhere inside, and the smallest certified lower bound of det J / mean det J.
+  // The node-by-node repair works on the corners, so `success` does not include it yet.
+  std::size_t notCertifiedBefore = 0, notCertifiedAfter = 0;
+  double certifiedMinimumBefore = 0, certifiedMinimumAfter = 0;
   std::size_t movedNodes = 0;
   std::size_t movedSurfaceNodes = 0;       // of which in `skin` or `skull`
   bool symmetricPairs = false;             // mirror node pairs were moved together

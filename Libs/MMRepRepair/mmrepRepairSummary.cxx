@@ -69,12 +69,16 @@ std::string RepairReportJson(const RepairReport& report, const FEMesh& repaired,
                    {{"minScaledJacobian", Number(report.minScaledJacobianBefore)},
                     {"meanScaledJacobian", Number(report.meanScaledJacobianBefore)},
                     {"belowThreshold", report.belowThresholdBefore},
-                    {"inverted", report.invertedBefore}}},
+                    {"inverted", report.invertedBefore},
+                    {"notCertifiedInside", report.notCertifiedBefore},
+                    {"certifiedMinimumJacobianRatio", Number(report.certifiedMinimumBefore)}}},
                   {"after",
                    {{"minScaledJacobian", Number(report.minScaledJacobianAfter)},
                     {"meanScaledJacobian", Number(report.meanScaledJacobianAfter)},
                     {"belowThreshold", report.belowThresholdAfter},
-                    {"inverted", report.invertedAfter}}}};
+                    {"inverted", report.invertedAfter},
+                    {"notCertifiedInside", report.notCertifiedAfter},
+                    {"certifiedMinimumJacobianRatio", Number(report.certifiedMinimumAfter)}}}};
   json surfaces = json::object();
   for (const auto& a : accuracy)
     surfaces[a.set] = {{"surface", a.surfaceName}, {"before", ToJSON(a.before)}, {"after", ToJSON(a.after)}};

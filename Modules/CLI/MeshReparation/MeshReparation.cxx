@@ -138,6 +138,9 @@ MMREP_MODULE_ENTRY_POINT(int argc, char* argv[])
     ctx.outputs.Set("invertedBefore", static_cast<long long>(report.invertedBefore));
     ctx.outputs.Set("invertedAfter", static_cast<long long>(report.invertedAfter));
     ctx.outputs.Set("belowThresholdAfter", static_cast<long long>(report.belowThresholdAfter));
+    ctx.outputs.Set("notCertifiedBefore", static_cast<long long>(report.notCertifiedBefore));
+    ctx.outputs.Set("notCertifiedAfter", static_cast<long long>(report.notCertifiedAfter));
+    ctx.outputs.Set("certifiedMinimumAfter", report.certifiedMinimumAfter);
     ctx.outputs.Set("movedNodes", static_cast<long long>(report.movedNodes));
     ctx.outputs.Set("seconds", report.seconds);
   });

@@ -3,6 +3,7 @@
 // MeshReparation module: runs the executable on generated tangled shells (under xvfb-run when
 // there is no display) and checks its files against recomputations from the meshes it wrote.
 #include "mmrepFEMeshIO.h"
+#include "mmrepCertifiedJacobian.h"
 #include "mmrepMeshQuality.h"
 #include "mmrepModuleRunner.h"
 #include "mmrepSurfaceIO.h"
@@ -141,6 +142,13 @@ TEST(RepairModule, RepairsTangledMeshWithReportAndHistogram)
   EXPECT_EQ(std::stoul(rp.at("movedNodes")), moved);
   EXPECT_NEAR(std::stod(rp.at("minScaledJacobianAfter")), after.min, 1e-9);
   EXPECT_NEAR(std::stod(rp.at("minScaledJacobianBefore")), before.min, 1e-9);
+  // Validity inside: the certificate of the mesh as read back, and of the input, exactly.
+  const auto certifiedIn = mmrep::quality::CertifyMesh(input), certifiedOut = mmrep::quality::CertifyMesh(output);
+  EXPECT_EQ(std::stoul(rp.at("notCertifiedBefore")), certifiedIn.NotValid());
+  EXPECT_EQ(std::stoul(rp.at("notCertifiedAfter")), certifiedOut.NotValid());
+  EXPECT_GE(certifiedIn.NotValid(), before.inverted); // an element inverted at a corner is never certified
+  EXPECT_NEAR(std::stod(rp.at("certifiedMinimumAfter")), certifiedOut.minimumLower, 1e-6);
+  EXPECT_EQ(report["quality"]["after"]["notCertifiedInside"].get<std::size_t>(), certifiedOut.NotValid());
 
   // The histogram: two panels side by side with red (below threshold) bars before, blue after.
   vtkNew<vtkPNGReader> png;
