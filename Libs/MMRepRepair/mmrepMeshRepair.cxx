@@ -430,6 +430,7 @@ RepairReport RepairMesh(FEMesh& mesh, const RepairOptions& options)
   report.certifiedMinimumBefore = certifiedBefore.minimumLower;
 
   quality::QualitySummary after = before;
+  quality::CertificationSummary certifiedAfter = certifiedBefore;
   if (before.belowThreshold > 0 || before.inverted > 0) // a valid mesh is left untouched
   {
     // The lips move node by node here: close the mouth slit so that they stay together.
@@ -437,13 +438,13 @@ RepairReport RepairMesh(FEMesh& mesh, const RepairOptions& options)
     Repairer(mesh, options).Run(report);
     ReopenMouth(mesh, closed);
     after = quality::SummarizeScaledJacobian(mesh, threshold, sequential);
+    certifiedAfter = quality::CertifyMesh(mesh);
   }
   report.minScaledJacobianAfter = after.min;
   report.meanScaledJacobianAfter = after.mean;
   report.invertedAfter = after.inverted;
   report.belowThresholdAfter = after.belowThreshold;
   report.success = after.belowThreshold == 0 && after.inverted == 0;
-  const quality::CertificationSummary certifiedAfter = quality::CertifyMesh(mesh);
   report.notCertifiedAfter = certifiedAfter.NotValid();
   report.certifiedMinimumAfter = certifiedAfter.minimumLower;
 
