@@ -15,6 +15,7 @@ DEMO_PACKAGES=(
   libopenmesh-dev          # half-edge surface meshes
   nlohmann-json3-dev       # Slicer markups (.mrk.json), reports
   libtclap-dev             # command-line parsing (as Slicer's GenerateCLP)
+  liblbfgspp-dev           # L-BFGS minimiser (header-only, Eigen) of the foldover-free untangling
   zlib1g-dev               # the decompressed length of .nii.gz volumes, checked before reading
   calculix-ccx             # the muscle-activation solver
   xvfb xauth libx11-dev    # off-screen X server for VTK pictures, X connection check

@@ -10,12 +10,13 @@
 // node, and compass steps. A move is kept only when it raises the sorted (leximin) qualities of
 // the elements around the node, capped just above the threshold, and never pushes an element that
 // met the threshold below it. Phase 1 visits inverted elements only, phase 2 every element below
-// the threshold; each phase first moves inner nodes only, then also surface nodes.
+// the threshold; each phase first moves inner nodes only, then also surface nodes. Before them the
+// inverted elements are untangled globally (mmrepFoldoverFreeUntangling.h).
 #include "mmrepMeshRepair.h"
 
 #include "mmrepCertifiedJacobian.h"
-
 #include "mmrepEmbedding.h"
+#include "mmrepFoldoverFreeUntangling.h"
 #include "mmrepIdealPositions.h"
 #include "mmrepLipContact.h"
 #include "mmrepMeshQuality.h"
@@ -59,10 +60,9 @@ public:
   void Run(RepairReport& report)
   {
     const std::vector<Point3> original = mesh_.nodes;
-    quality_.assign(mesh_.elements.size(), std::numeric_limits<double>::infinity());
-    for (std::size_t e = 0; e < mesh_.elements.size(); ++e)
-      if (IsSolid(mesh_.elements[e].type))
-        quality_[e] = Quality(e);
+    ComputeQualities();
+    if (options_.globalUntangling)
+      Untangle(report);
 
     // Phase 1: regularity (inverted first), phase 2: threshold. In each phase inner nodes move
     // first, then surface nodes too, then also the nodes around the bad elements (to make room).
@@ -92,7 +92,7 @@ public:
           const bool changed = Sweep(regularity, surfaceAllowed);
           const Progress now = Measure(regularity);
           if (options_.progress)
-            options_.progress(
+            ReportProgress(
               std::min(1.0, (pass * stages + stage + double(sweep + 1) / options_.maximumSweeps) / stages));
           const bool progressed = now.bad < last.bad || now.score > last.score + 1e-3 * double(last.bad);
           last = now;
@@ -100,7 +100,7 @@ public:
             break;
         }
         if (options_.progress)
-          options_.progress(std::min(1.0, double(pass * stages + stage + 1) / stages));
+          ReportProgress(std::min(1.0, double(pass * stages + stage + 1) / stages));
       }
     }
     FollowEmbeddings(mesh_, original);
@@ -116,6 +116,35 @@ public:
   }
 
 private:
+  // ---- all the nodes around the inverted elements at once -----------------------------------
+  void Untangle(RepairReport& report)
+  {
+    std::vector<std::size_t> seeds;
+    for (std::size_t e = 0; e < mesh_.elements.size(); ++e)
+      if (IsSolid(mesh_.elements[e].type) && quality_[e] <= 0)
+        seeds.push_back(e);
+    if (seeds.empty())
+      return;
+    const auto start = std::chrono::steady_clock::now();
+    UntanglingOptions untangling;
+    if (options_.progress) // the first half of the repair's progress
+      untangling.progress = [this](double f) { options_.progress(0.5 * f); }, progressStart_ = 0.5;
+    const UntanglingResult result = UntangleFoldovers(mesh_, adjacency_, constraints_, seeds, untangling);
+    report.untanglingSteps = result.steps;
+    report.untanglingSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (result.kept)
+      ComputeQualities();
+  }
+
+  // The node-by-node phases' fraction done, after the untangling's share.
+  void ReportProgress(double f) const { options_.progress(progressStart_ + (1 - progressStart_) * f); }
+  void ComputeQualities()
+  {
+    quality_.assign(mesh_.elements.size(), std::numeric_limits<double>::infinity());
+    for (std::size_t e = 0; e < mesh_.elements.size(); ++e)
+      if (IsSolid(mesh_.elements[e].type))
+        quality_[e] = Quality(e);
+  }
   // ---- quality ------------------------------------------------------------------------------
   double Quality(std::size_t e) const
   {
@@ -388,6 +417,7 @@ private:
   const RepairConstraints constraints_;
   double threshold_ = 0.3, cap_ = 0.35;
   std::vector<double> quality_;
+  double progressStart_ = 0;
   bool ring_ = false;
   // Logical clock of searches: when each element last changed, when each node's search last failed.
   std::uint64_t clock_ = 1;
@@ -431,7 +461,7 @@ RepairReport RepairMesh(FEMesh& mesh, const RepairOptions& options)
 
   quality::QualitySummary after = before;
   quality::CertificationSummary certifiedAfter = certifiedBefore;
-  if (before.belowThreshold > 0 || before.inverted > 0) // a valid mesh is left untouched
+  if (before.belowThreshold > 0 || before.inverted > 0) // else untouched
   {
     // The lips move node by node here: close the mouth slit so that they stay together.
     const ClosedMouth closed = CloseMouth(mesh);

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Copyright (c) 2026 MMRep developers (see LICENSE)
 // Mesh reparation (Bucki, Lobos, Payan, Hitschfeld 2011, improved as the MMRep-for-speech paper's
-// conclusion proposes): first make every element regular (positive Jacobian at every corner),
+// conclusion proposes): first make every element regular (positive Jacobian at every corner), all the
+// nodes around the inverted elements at once (foldover-free untangling) and then node by node,
 // then raise every element's scaled Jacobian to a threshold, moving the nodes of the worst elements
 // first and inner nodes before surface nodes; surface nodes slide on their surface (projected
 // back onto it) and mid-sagittal nodes stay on the symmetry plane, so accuracy and symmetry are
@@ -24,6 +25,8 @@ struct RepairOptions
 {
   double scaledJacobianThreshold = 0.3; // every solid element must reach this
   int maximumSweeps = 200;              // passes over the elements below the threshold
+  // Untangle the inverted elements globally first (mmrepFoldoverFreeUntangling.h), then node by node.
+  bool globalUntangling = true;
   // Surfaces the `skin` and `skull` node sets must stay on (nullptr: the mesh's own boundary).
   vtkPolyData* skinSurface = nullptr;
   vtkPolyData* skullSurface = nullptr;
@@ -44,9 +47,11 @@ struct RepairReport
   std::size_t belowThresholdBefore = 0, belowThresholdAfter = 0; // degenerate elements included
   // Validity inside the elements (quality::CertifyMesh), reported beside the corner measures: elements
   // not proved valid everywhere inside, and the smallest certified lower bound of det J / mean det J.
-  // The node-by-node repair works on the corners, so `success` does not include it yet.
+  // The repair works on the corners and centres, so `success` does not include it yet.
   std::size_t notCertifiedBefore = 0, notCertifiedAfter = 0;
   double certifiedMinimumBefore = 0, certifiedMinimumAfter = 0;
+  int untanglingSteps = 0; // minimisations of the global untangling (0: nothing inverted, or switched off)
+  double untanglingSeconds = 0;
   std::size_t movedNodes = 0;
   std::size_t movedSurfaceNodes = 0;       // of which in `skin` or `skull`
   bool symmetricPairs = false;             // mirror node pairs were moved together

@@ -84,10 +84,12 @@ std::string RepairReportJson(const RepairReport& report, const FEMesh& repaired,
     surfaces[a.set] = {{"surface", a.surfaceName}, {"before", ToJSON(a.before)}, {"after", ToJSON(a.after)}};
   j["surfaceAccuracy"] = surfaces;
   j["solidElements"] = repaired.SolidElementCount();
+  j["untanglingSteps"] = report.untanglingSteps;
   j["movedNodes"] = report.movedNodes;
   j["movedSurfaceNodes"] = report.movedSurfaceNodes;
   j["symmetricPairs"] = report.symmetricPairs;
   j["seconds"] = report.seconds;
+  j["untanglingSeconds"] = report.untanglingSeconds;
   json failed = json::array();
   for (std::size_t k = 0; k < report.failedElements.size(); ++k)
   {

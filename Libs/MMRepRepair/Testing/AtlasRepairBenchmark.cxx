@@ -2,9 +2,10 @@
 // Copyright (c) 2026 MMRep developers (see LICENSE)
 // Repair benchmark on the real atlas (not a ctest): tangles of Resources/Atlas/FaceAtlas.vtu
 // (mmrepAtlasTangles.h) repaired against the atlas's skin and skull reference surfaces and its
-// mid-sagittal plane. Reports the success rate (0 inverted and min scaled Jacobian >= 0.3), the
-// lips accuracy loss, the symmetry error of symmetric cases, the time per mesh, and the time per
-// element on lower parts of the atlas (the scaling in element count).
+// mid-sagittal plane, node by node alone and with the global untangling first (side by side).
+// Reports the success rate (0 inverted and min scaled Jacobian >= 0.3), the lips accuracy loss, the
+// symmetry error of symmetric cases, the time per mesh, and the time per element on lower parts of
+// the atlas (the scaling in element count).
 // Usage: AtlasRepairBenchmark [cases = 100] [maximum noise = 0.18] [scaling cases = 10] [atlas folder]
 #include "mmrepAtlasTangles.h"
 #include "mmrepMeshRepair.h"
@@ -15,9 +16,56 @@
 #include <cstdlib>
 #include <string>
 
+namespace
+{
+using namespace mmrep;
+
+struct Figures
+{
+  int ok = 0;
+  double seconds = 0, slowest = 0, lipsLoss = -1e300, symmetry = 0, minAfter = 1e300;
+};
+
+// Repairs tangles 1..cases with the global untangling stage on or off; prints the failures.
+Figures RunCases(const testing::MeshTangleContext& context, int cases, double maximumNoise, bool global)
+{
+  Figures f;
+  double bad = 0, inverted = 0;
+  for (int k = 0; k < cases; ++k)
+  {
+    const testing::TangleOptions tangle = testing::RandomTangle(static_cast<std::uint32_t>(k + 1), maximumNoise);
+    FEMesh mesh = testing::TangleMesh(context, tangle);
+    const SurfaceDistance lipsBefore = MeasureSurfaceDistance(mesh, "lips", context.skin);
+    RepairOptions options = testing::TangleRepairOptions(context);
+    options.globalUntangling = global;
+    const RepairReport report = RepairMesh(mesh, options);
+    const SurfaceDistance lipsAfter = MeasureSurfaceDistance(mesh, "lips", context.skin);
+    f.ok += report.success ? 1 : 0;
+    f.seconds += report.seconds;
+    f.slowest = std::max(f.slowest, report.seconds);
+    bad += static_cast<double>(report.belowThresholdBefore);
+    inverted += static_cast<double>(report.invertedBefore);
+    f.minAfter = std::min(f.minAfter, report.minScaledJacobianAfter);
+    f.lipsLoss = std::max(f.lipsLoss, lipsAfter.max - lipsBefore.max);
+    if (tangle.symmetric)
+      f.symmetry = std::max(f.symmetry, testing::SymmetryError(mesh, context));
+    if (!report.success || std::getenv("MMREP_BENCHMARK_VERBOSE") != nullptr)
+      std::printf(
+        "   case %d: %s in %.3f s (untangling %.3f s, %d steps); before: %zu inverted, %zu below 0.3, min %.3f; after: min %.3f, "
+        "%zu below (noise %.2f folds %d warp %.2f sym %d)\n",
+        k + 1, report.success ? "ok" : "FAILED", report.seconds, report.untanglingSeconds, report.untanglingSteps,
+        report.invertedBefore, report.belowThresholdBefore, report.minScaledJacobianBefore,
+        report.minScaledJacobianAfter, report.failedElements.size(), tangle.noise, tangle.folds, tangle.warp,
+        tangle.symmetric ? 1 : 0);
+  }
+  std::printf("%s: before repair (mean per case) %.1f inverted, %.1f below 0.3\n",
+              global ? "global + node by node" : "node by node", inverted / cases, bad / cases);
+  return f;
+}
+} // namespace
+
 int main(int argc, char* argv[])
 {
-  using namespace mmrep;
   const int cases = argc > 1 ? std::atoi(argv[1]) : 100;
   const double maximumNoise = argc > 2 ? std::atof(argv[2]) : 0.18;
   const int scalingCases = argc > 3 ? std::atoi(argv[3]) : 10;
@@ -31,55 +79,14 @@ int main(int argc, char* argv[])
               "symmetric for even seeds\n",
               maximumNoise);
 
-  int ok = 0, symmetricCases = 0;
-  double seconds = 0, slowest = 0, lipsLoss = -1e300, symmetry = 0, bad = 0, inverted = 0, minAfter = 1e300;
-  for (int k = 0; k < cases; ++k)
+  std::printf("%-22s %9s %10s %11s %11s %12s %14s\n", "repair", "success", "mean s", "slowest s", "worst min",
+              "lips loss mm", "symmetry (rel)");
+  for (const bool global : {false, true})
   {
-    const testing::TangleOptions tangle = testing::RandomTangle(static_cast<std::uint32_t>(k + 1), maximumNoise);
-    FEMesh mesh = testing::TangleMesh(context, tangle);
-    const SurfaceDistance lipsBefore = MeasureSurfaceDistance(mesh, "lips", context.skin);
-    const double symmetryBefore = tangle.symmetric ? testing::SymmetryError(mesh, context) : 0.0;
-    const RepairReport report = RepairMesh(mesh, testing::TangleRepairOptions(context));
-    const SurfaceDistance lipsAfter = MeasureSurfaceDistance(mesh, "lips", context.skin);
-    ok += report.success ? 1 : 0;
-    seconds += report.seconds;
-    slowest = std::max(slowest, report.seconds);
-    bad += static_cast<double>(report.belowThresholdBefore);
-    inverted += static_cast<double>(report.invertedBefore);
-    minAfter = std::min(minAfter, report.minScaledJacobianAfter);
-    lipsLoss = std::max(lipsLoss, lipsAfter.max - lipsBefore.max);
-    if (tangle.symmetric)
-    {
-      ++symmetricCases;
-      const double after = testing::SymmetryError(mesh, context);
-      symmetry = std::max(symmetry, after);
-      std::printf("   case %d (symmetric): symmetry error %.1e before, %.1e after (relative); mirror pairs %s\n", k + 1,
-                  symmetryBefore, after, report.symmetricPairs ? "moved together" : "not detected");
-    }
-    if (!report.success || std::getenv("MMREP_BENCHMARK_VERBOSE") != nullptr)
-      std::printf("   case %d: %s in %.3f s; before: %zu inverted, %zu below 0.3, min %.3f; after: min %.3f, "
-                  "%zu below (noise %.2f folds %d warp %.2f sym %d)\n",
-                  k + 1, report.success ? "ok" : "FAILED", report.seconds, report.invertedBefore,
-                  report.belowThresholdBefore, report.minScaledJacobianBefore, report.minScaledJacobianAfter,
-                  report.failedElements.size(), tangle.noise, tangle.folds, tangle.warp, tangle.symmetric ? 1 : 0);
-    if (!report.success && std::getenv("MMREP_BENCHMARK_VERBOSE") != nullptr)
-      for (std::size_t f = 0; f < report.failedElements.size() && f < 8; ++f)
-      {
-        const Element& e = mesh.elements[report.failedElements[f]];
-        std::printf("     element %zu (%.3f) nodes", report.failedElements[f], report.failedValues[f]);
-        for (int k = 0; k < 8; ++k)
-          std::printf(" %d(d%.2f%s)", e.nodes[k], context.depth[e.nodes[k]],
-                      context.partner.empty() || context.partner[e.nodes[k]] != e.nodes[k] ? "" : ",mid");
-        std::printf("\n");
-      }
+    const Figures f = RunCases(context, cases, maximumNoise, global);
+    std::printf("%-22s %8.1f%% %10.3f %11.3f %11.3f %12.2e %14.1e\n", global ? "global + node by node" : "node by node",
+                100.0 * f.ok / cases, f.seconds / cases, f.slowest, f.minAfter, f.lipsLoss, f.symmetry);
   }
-  std::printf("success %d / %d = %.1f %%; before repair (mean per case): %.1f inverted, %.1f below 0.3; "
-              "worst min scaled Jacobian after %.3f\n",
-              ok, cases, 100.0 * ok / cases, inverted / cases, bad / cases, minAfter);
-  std::printf("lips: largest increase of the max distance to the skin %.2e mm; symmetry error (%d symmetric cases) "
-              "%.1e relative\n",
-              lipsLoss, symmetricCases, symmetry);
-  std::printf("time: mean %.3f s, slowest %.3f s per atlas (sequential)\n", seconds / cases, slowest);
 
   // Scaling: the lower 25 %, 50 %, 75 % and all of the atlas, same tangles.
   std::printf("%9s %8s %6s %12s %12s\n", "fraction", "elements", "ok", "s per mesh", "us/element");

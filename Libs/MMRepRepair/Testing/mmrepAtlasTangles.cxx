@@ -445,6 +445,14 @@ double SymmetryError(const FEMesh& mesh, const MeshTangleContext& c)
   return worst / c.diagonal;
 }
 
+const MeshTangleContext& ShippedAtlasTangleContext()
+{
+  static const MeshTangleContext context = LoadTangleContext(MMREP_SOURCE_DIR "/Resources/Atlas/FaceAtlas.vtu",
+                                                             MMREP_SOURCE_DIR "/Resources/Atlas/FaceAtlasSkin.vtp",
+                                                             MMREP_SOURCE_DIR "/Resources/Atlas/FaceAtlasSkull.vtp");
+  return context;
+}
+
 RepairOptions TangleRepairOptions(const MeshTangleContext& c)
 {
   RepairOptions o;

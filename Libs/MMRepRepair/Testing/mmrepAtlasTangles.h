@@ -49,6 +49,9 @@ struct MeshTangleContext
 MeshTangleContext LoadTangleContext(const std::string& meshPath, const std::string& skinPath,
                                     const std::string& skullPath);
 
+// The shipped atlas's context (Resources/Atlas/FaceAtlas.vtu and its surfaces), loaded once.
+const MeshTangleContext& ShippedAtlasTangleContext();
+
 // Repair options for a tangle of the context's mesh: its skin and skull surfaces and its plane.
 RepairOptions TangleRepairOptions(const MeshTangleContext& c);
 MeshTangleContext MakeTangleContext(FEMesh mesh, vtkSmartPointer<vtkPolyData> skin, vtkSmartPointer<vtkPolyData> skull);
