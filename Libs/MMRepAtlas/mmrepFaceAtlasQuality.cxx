@@ -135,9 +135,11 @@ void RepairFaceAtlas(const FaceAtlasOptions& options, FaceAtlas& atlas)
     ro.skullSurface = atlas.skullSurface;
     ro.hasSymmetryPlane = true;
     ro.symmetryPlane = atlas.plane;
-    // The shipped atlas (Resources/Atlas) was built node by node; the global stage would build
-    // another one, and every figure measured on it would have to be measured again.
+    // The shipped atlas (Resources/Atlas) was built node by node without the plane-side rule; the
+    // global stage or the rule would build another one, and every figure measured on it would have
+    // to be measured again.
     ro.globalUntangling = false;
+    ro.keepPlaneSides = false;
     const RepairReport rep = RepairMesh(mesh, ro);
     atlas.repairedNodes += rep.movedNodes;
     atlas.log.push_back(FaceAtlasLogLine("repair: %.0f nodes moved; scaled Jacobian min %.3f -> %.3f", rep.movedNodes,

@@ -101,10 +101,15 @@ public:
 
   Eigen::Index Size() const { return offsets_.back(); }
 
-  void Apply(const Eigen::VectorXd& z, std::vector<Point3>& x) const
+  // Moves the nodes to z; with `onSurfaces`, constrained nodes go onto their surfaces and the plane
+  // (what the energy then sees is where they will be; the gradient stays the tangent one).
+  void Apply(const Eigen::VectorXd& z, std::vector<Point3>& x, bool onSurfaces = false) const
   {
     for (std::size_t k = 0; k < nodes_.size(); ++k)
-      Place(nodes_[k], base_[k] + basis_[k] * z.segment(offsets_[k], basis_[k].cols()), x);
+    {
+      const Point3 p = base_[k] + basis_[k] * z.segment(offsets_[k], basis_[k].cols());
+      Place(nodes_[k], onSurfaces && basis_[k].cols() < 3 ? constraints_.Constrain(nodes_[k], p) : p, x);
+    }
   }
 
   // Projects the nodes onto their surfaces and the plane (the end of a minimisation).
@@ -161,12 +166,13 @@ struct Objective
   std::vector<Point3>& x;
   std::vector<Point3>& gradient;
   double eps;
+  bool projected;
   double best = std::numeric_limits<double>::infinity();
   Eigen::VectorXd bestZ;
 
   double operator()(const Eigen::VectorXd& z, Eigen::VectorXd& dz)
   {
-    unknowns.Apply(z, x);
+    unknowns.Apply(z, x, projected);
     unknowns.ClearGradient(gradient);
     const double e = energy.Evaluate(x, eps, &gradient);
     unknowns.Pull(gradient, dz);
@@ -179,11 +185,11 @@ struct Objective
 };
 
 // One minimisation at fixed eps from the base point; leaves x at the best point found.
-void Minimize(const FoldoverFreeEnergy& energy, const Unknowns& unknowns, double eps, int iterations,
+void Minimize(const FoldoverFreeEnergy& energy, const Unknowns& unknowns, double eps, int iterations, bool projected,
               std::vector<Point3>& x)
 {
   std::vector<Point3> gradient(x.size(), Point3::Zero());
-  Objective objective{energy, unknowns, x, gradient, eps};
+  Objective objective{energy, unknowns, x, gradient, eps, projected};
   LBFGSpp::LBFGSParam<double> parameters;
   parameters.m = 7;
   parameters.epsilon = 1e-9;
@@ -203,7 +209,36 @@ void Minimize(const FoldoverFreeEnergy& energy, const Unknowns& unknowns, double
     // A line search that cannot go further: the best point seen so far is the result.
   }
   if (objective.bestZ.size() == z.size())
-    unknowns.Apply(objective.bestZ, x);
+    unknowns.Apply(objective.bestZ, x, projected);
+}
+
+// A valid region: a few minimisations with a small eps (the energy is then a barrier keeping every
+// frame positive), each kept only when it leaves nothing inverted.
+void Relax(const FoldoverFreeEnergy& energy, Unknowns& unknowns, const UntanglingOptions& options,
+           std::vector<Point3>& x, UntanglingResult& result)
+{
+  constexpr double kEps = 1e-3; // det J is about 1 for a well-shaped frame
+  constexpr int kSteps = 5;
+  for (int step = 0; step < kSteps; ++step)
+  {
+    ++result.steps;
+    const std::vector<Point3> previous = x;
+    unknowns.Rebase(x);
+    const double before = energy.Evaluate(x, kEps);
+    Minimize(energy, unknowns, kEps, options.iterationsPerStep, true, x);
+    unknowns.Constrain(x);
+    const double after = energy.Evaluate(x, kEps);
+    if (!(after < before) || !energy.InvertedElements(x).empty())
+    {
+      x = previous;
+      break;
+    }
+    result.kept = true;
+    if (options.progress)
+      options.progress(double(step + 1) / kSteps);
+    if (before - after <= 1e-3 * after)
+      break;
+  }
 }
 } // namespace
 
@@ -219,20 +254,27 @@ UntanglingResult UntangleFoldovers(FEMesh& mesh, const NodeElements& adjacency, 
   const FoldoverFreeEnergy energy(std::move(frames), options.theta);
   std::vector<Point3> x = mesh.nodes;
   result.invertedBefore = result.invertedAfter = energy.InvertedElements(x).size();
-  if (region.nodes.empty() || result.invertedBefore == 0)
+  if (region.nodes.empty() || (result.invertedBefore == 0 && !options.relaxValid))
     return result;
 
   Unknowns unknowns(constraints, region.nodes);
+  if (result.invertedBefore == 0)
+  {
+    Relax(energy, unknowns, options, x, result);
+    if (result.kept)
+      mesh.nodes = x;
+    return result;
+  }
   std::vector<Point3> best = x;
   std::size_t fewest = result.invertedBefore;
   double detmin = energy.MinimumDeterminant(x);
-  double eps = std::max(0.1, 0.2 * std::abs(std::min(detmin, 0.0)));
+  double eps = std::max(options.initialEps, 0.2 * std::abs(std::min(detmin, 0.0)));
   for (int stale = 0, valid = 0; result.steps < options.maximumSteps && stale < options.patience;)
   {
     ++result.steps;
     unknowns.Rebase(x);
     const double before = energy.Evaluate(x, eps);
-    Minimize(energy, unknowns, eps, options.iterationsPerStep, x);
+    Minimize(energy, unknowns, eps, options.iterationsPerStep, false, x);
     unknowns.Constrain(x);
     const double after = energy.Evaluate(x, eps);
     detmin = energy.MinimumDeterminant(x);

@@ -4,9 +4,10 @@
 // conclusion proposes): first make every element regular (positive Jacobian at every corner), all the
 // nodes around the inverted elements at once (foldover-free untangling) and then node by node,
 // then raise every element's scaled Jacobian to a threshold, moving the nodes of the worst elements
-// first and inner nodes before surface nodes; surface nodes slide on their surface (projected
-// back onto it) and mid-sagittal nodes stay on the symmetry plane, so accuracy and symmetry are
-// kept. A mesh already valid above the threshold is returned unchanged, bit for bit.
+// first and inner nodes before surface nodes; what stays below it is relaxed globally and repaired
+// node by node again. Surface nodes slide on their surface (projected back onto it), mid-sagittal
+// nodes stay on the symmetry plane and the nodes beside it on their side of it, so accuracy and
+// symmetry are kept. A mesh already valid above the threshold is returned unchanged, bit for bit.
 #pragma once
 
 #include "mmrepFEMesh.h"
@@ -27,6 +28,10 @@ struct RepairOptions
   int maximumSweeps = 200;              // passes over the elements below the threshold
   // Untangle the inverted elements globally first (mmrepFoldoverFreeUntangling.h), then node by node.
   bool globalUntangling = true;
+  // Nodes next to the symmetry plane's sheet of nodes stay on the side where their elements lie;
+  // pushed across (a tangle can leave every corner positive while the two halves overlap), they go
+  // back first (mmrepRepairConstraints.h).
+  bool keepPlaneSides = true;
   // Surfaces the `skin` and `skull` node sets must stay on (nullptr: the mesh's own boundary).
   vtkPolyData* skinSurface = nullptr;
   vtkPolyData* skullSurface = nullptr;

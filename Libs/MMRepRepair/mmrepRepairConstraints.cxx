@@ -21,6 +21,9 @@ constexpr double kMirrorTolerance = 1e-7;
 // Mid-sagittal nodes within this fraction of the mesh size of their fitted plane are coplanar.
 constexpr double kCoplanarTolerance = 1e-6;
 
+// A node next to the plane keeps this fraction of its neighbours' mean distance from it.
+constexpr double kSideMargin = 0.01;
+
 const std::vector<std::int32_t>* Set(const FEMesh& mesh, const char* name)
 {
   const auto it = mesh.nodeSets.find(name);
@@ -89,7 +92,54 @@ RepairConstraints::RepairConstraints(const FEMesh& mesh, const NodeElements& adj
   if (hasPlane_ && midsagittal != nullptr)
     for (const std::int32_t id : *midsagittal)
       onPlane_[id] = 1;
+  if (hasPlane_ && options.keepPlaneSides)
+    FindSides(adjacency);
   std::sort(fixed_.begin(), fixed_.end());
+}
+
+// The nodes of elements with a face on the plane (3 or more plane nodes) take the side where the
+// other nodes of their elements lie, those not next to the plane themselves (fewer of them have
+// been pushed across by whatever tangled the mesh).
+void RepairConstraints::FindSides(const NodeElements& adjacency)
+{
+  const std::size_t n = mesh_.nodes.size();
+  std::vector<char> next(n, 0);
+  for (const Element& element : mesh_.elements)
+  {
+    const int count = NodeCount(element.type);
+    int onPlane = 0;
+    for (int k = 0; k < count; ++k)
+      onPlane += onPlane_[element.nodes[k]];
+    if (element.type != ElementType::Cable && onPlane >= 3)
+      for (int k = 0; k < count; ++k)
+        next[element.nodes[k]] = !onPlane_[element.nodes[k]];
+  }
+  side_.assign(n, 0);
+  sideMargin_.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (!next[i])
+      continue;
+    double sum = 0;
+    int count = 0;
+    for (std::size_t k = adjacency.offsets[i]; k < adjacency.offsets[i + 1]; ++k)
+    {
+      const Element& element = mesh_.elements[adjacency.adjacent[k]];
+      for (int j = 0; j < NodeCount(element.type); ++j)
+        if (const auto m = static_cast<std::size_t>(element.nodes[j]); !onPlane_[m] && !next[m])
+          sum += plane_.SignedDistance(mesh_.nodes[m]), ++count;
+    }
+    if (count > 0 && sum != 0)
+    {
+      side_[i] = sum > 0 ? 1 : -1;
+      sideMargin_[i] = kSideMargin * std::abs(sum) / count;
+    }
+  }
+}
+
+bool RepairConstraints::OnItsSide(std::size_t node, const Point3& p) const
+{
+  return Side(node) == 0 || Side(node) * plane_.SignedDistance(p) >= sideMargin_[node];
 }
 
 double RepairConstraints::Diagonal() const
@@ -138,7 +188,12 @@ Point3 RepairConstraints::Constrain(std::size_t node, Point3 p) const
   if (surface != nullptr)
     p = surface->Project(p);
   if (!onPlane_[node])
-    return p;
+  {
+    if (OnItsSide(node, p))
+      return p;
+    p += (Side(node) * sideMargin_[node] - plane_.SignedDistance(p)) * plane_.normal;
+    return surface != nullptr ? surface->Project(p) : p;
+  }
   p = plane_.Project(p);
   // On a surface and the plane: alternate projections onto their intersection curve (they
   // cross nearly at right angles, so this converges in a few steps), ending on the plane.

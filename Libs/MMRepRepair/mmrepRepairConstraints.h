@@ -2,7 +2,9 @@
 // Copyright (c) 2026 MMRep developers (see LICENSE)
 // Where each node of a mesh under repair may move (mmrepMeshRepair.h): `skin` and `skull` nodes
 // slide on their surface, nodes on the symmetry plane stay on it, mirror partners move together
-// (mmrepMirrorPairs.h), nodes of a surface set without any surface stay fixed.
+// (mmrepMirrorPairs.h), nodes of a surface set without any surface stay fixed. The nodes next to the
+// plane's sheet of nodes stay on the side of it where their elements lie: a node pushed across (a
+// mirror pair swapped) leaves every corner Jacobian positive while the two halves overlap.
 #pragma once
 
 #include "mmrepMeshRepair.h"
@@ -40,15 +42,22 @@ public:
   bool IsFixed(std::size_t node) const;
   std::size_t Partner(std::size_t node) const { return static_cast<std::size_t>(partner_[node]); }
   bool MirrorPairs() const { return pairs_; } // mirror partners move together
+  // The side of the plane the node must keep (+1 along the normal, -1, 0: either), and whether p
+  // is on it.
+  int Side(std::size_t node) const { return side_.empty() ? 0 : side_[node]; }
+  bool OnItsSide(std::size_t node, const Point3& p) const;
   const Plane& SymmetryPlane() const { return plane_; }
 
 private:
   void FitPlane(const std::vector<std::int32_t>& ids);
+  void FindSides(const NodeElements& adjacency);
   double Diagonal() const;
 
   const FEMesh& mesh_;
   std::vector<SurfaceKind> surface_;
   std::vector<char> onPlane_;
+  std::vector<signed char> side_;  // empty without a plane
+  std::vector<double> sideMargin_; // mm a node keeps from the plane on its side
   std::vector<std::int32_t> partner_;
   std::vector<std::size_t> fixed_; // sorted
   bool pairs_ = false, hasPlane_ = false;
