@@ -4,6 +4,7 @@
 // elements with exact re-symmetrisation, and the surface nodes projected back onto the surfaces.
 #include "mmrepFaceAtlasStages.h"
 
+#include "mmrepCertifiedJacobian.h"
 #include "mmrepMeshQuality.h"
 #include "mmrepMeshRepair.h"
 
@@ -127,7 +128,8 @@ void RepairFaceAtlas(const FaceAtlasOptions& options, FaceAtlas& atlas)
   FEMesh& mesh = atlas.mesh;
   for (int round = 0; round < kRepairRounds; ++round)
   {
-    if (Quality(mesh, options).belowThreshold == 0)
+    const bool cornersGood = Quality(mesh, options).belowThreshold == 0;
+    if (cornersGood && quality::CertifyMesh(mesh).NotValid() == 0)
       break;
     RepairOptions ro;
     ro.scaledJacobianThreshold = options.qualityThreshold + kRepairThresholdMargin;
@@ -135,11 +137,11 @@ void RepairFaceAtlas(const FaceAtlasOptions& options, FaceAtlas& atlas)
     ro.skullSurface = atlas.skullSurface;
     ro.hasSymmetryPlane = true;
     ro.symmetryPlane = atlas.plane;
-    // The shipped atlas (Resources/Atlas) was built node by node without the plane-side rule; the
-    // global stage or the rule would build another one, and every figure measured on it would have
-    // to be measured again.
+    // Node by node, no global stage: first the corners, then the folds inside elements whose corners
+    // are good (the thin columns beside the philtrum), so that the second round moves only their nodes.
     ro.globalUntangling = false;
     ro.keepPlaneSides = false;
+    ro.certifyInside = cornersGood;
     const RepairReport rep = RepairMesh(mesh, ro);
     atlas.repairedNodes += rep.movedNodes;
     atlas.log.push_back(FaceAtlasLogLine("repair: %.0f nodes moved; scaled Jacobian min %.3f -> %.3f", rep.movedNodes,
@@ -150,6 +152,8 @@ void RepairFaceAtlas(const FaceAtlasOptions& options, FaceAtlas& atlas)
     atlas.log.push_back(
       FaceAtlasLogLine("after repair and symmetrisation: scaled Jacobian min %.3f, mean %.3f; %.0f below the threshold",
                        q.min, q.mean, q.belowThreshold));
+    atlas.log.push_back(FaceAtlasLogLine("%.0f elements not certified valid inside",
+                                         static_cast<double>(quality::CertifyMesh(mesh).NotValid())));
   }
 }
 

@@ -9,6 +9,7 @@
 #include "mmrepHalfModel.h"
 #include "mmrepImageIO.h"
 #include "mmrepLandmarkIO.h"
+#include "mmrepRepairSummary.h"
 #include "mmrepSurfaceIO.h"
 
 #include <fstream>
@@ -104,13 +105,8 @@ void WriteFaceModelOutputs(const FaceModelResult& result, const FEMesh& atlas, F
 
 std::string RepairFailureMessage(const FaceModelResult& result, double qualityThreshold, const fs::path& finalDirectory)
 {
-  std::string worst;
-  for (std::size_t i = 0; i < result.repair.failedElements.size() && i < 5; ++i)
-    worst += (i ? ", " : "") + std::to_string(result.repair.failedElements[i]) + " (" +
-             std::to_string(result.repair.failedValues[i]) + ")";
-  return "repair could not bring every element to scaled Jacobian " + std::to_string(qualityThreshold) + ": " +
-         std::to_string(result.repair.failedElements.size()) + " elements remain below (worst: " + worst +
-         "); nothing written to " + finalDirectory.string() + " (lower --qualityThreshold or check the control points)";
+  return "repair could not make every element valid: " + RepairFailureMessage(result.repair, qualityThreshold) +
+         "; nothing written to " + finalDirectory.string() + " (lower --qualityThreshold or check the control points)";
 }
 
 double ControlPointMeanError(const FaceModelResult& result)

@@ -195,6 +195,21 @@ CertifiedJacobian CertifyElement(const FEMesh& mesh, std::size_t element, int ma
   }
 }
 
+double CertifiedQuality(const FEMesh& mesh, std::size_t element, double cornerQuality)
+{
+  const Element& e = mesh.elements.at(element);
+  if (e.type == ElementType::Hexahedron)
+  {
+    const std::array<double, 27> whole = Bernstein(Nodes<8>(mesh, e), {0, 0, 0, 1, 0});
+    if (*std::min_element(whole.begin(), whole.end()) > 0)
+      return cornerQuality; // det J lies in the convex hull of its Bernstein coefficients
+  }
+  else if (e.type != ElementType::Wedge)
+    return cornerQuality;
+  const CertifiedJacobian c = CertifyElement(mesh, element);
+  return c.validity == Validity::Valid ? cornerQuality : std::min(c.lower, 0.0);
+}
+
 CertificationSummary CertifyMesh(const FEMesh& mesh, int maximumDepth)
 {
   const std::size_t n = mesh.elements.size();

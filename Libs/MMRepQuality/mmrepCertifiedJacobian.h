@@ -37,6 +37,13 @@ struct CertifiedJacobian
 // `maximumDepth` halvings of each parametric axis at most (hexahedra only).
 CertifiedJacobian CertifyElement(const FEMesh& mesh, std::size_t element, int maximumDepth = 6);
 
+// A quality for a repair that must make every element valid inside: `cornerQuality` (the element's
+// corner measure, > 0) when det J is certified positive over the element, otherwise the certified
+// lower bound of det J / mean det J (<= 0), which grows as the fold inside opens. Cheap for the usual
+// element (one set of Bernstein coefficients, all positive). Hexahedra and wedges; any other element
+// gets `cornerQuality`.
+double CertifiedQuality(const FEMesh& mesh, std::size_t element, double cornerQuality);
+
 struct CertificationSummary
 {
   std::size_t solids = 0, valid = 0, invertedCorner = 0, invertedInside = 0, undecided = 0;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Copyright (c) 2026 MMRep developers (see LICENSE)
 // Jacobian-based mesh repair, see mmrepMeshRepair.h: the plan (global untangling, node-by-node
-// phases, global relaxations of what stays below the threshold) and the report.
+// phases, global relaxations of what stays below the threshold, the folds inside elements) and the
+// report.
 #include "mmrepMeshRepair.h"
 
 #include "mmrepCertifiedJacobian.h"
@@ -72,10 +73,10 @@ void Repair(FEMesh& mesh, const RepairOptions& options, RepairReport& report)
   const bool global = options.globalUntangling;
   if (global && UntangleGlobally(mesh, options, adjacency, constraints, local.BadElements(true), false, 0, 0.4, report))
     local.Reset();
-  local.Run(global ? 0.4 : 0, global ? 0.8 : 1);
+  local.Run(global ? 0.4 : 0, global ? 0.8 : 0.9);
   for (int round = 0; global && round < kRelaxationRounds; ++round)
   {
-    const double from = 0.8 + 0.2 * round / kRelaxationRounds, to = 0.8 + 0.2 * (round + 1) / kRelaxationRounds;
+    const double from = 0.8 + 0.15 * round / kRelaxationRounds, to = 0.8 + 0.15 * (round + 1) / kRelaxationRounds;
     const NodeByNodeRepair::State before = local.Current();
     if (before.below == 0)
       break;
@@ -90,6 +91,21 @@ void Repair(FEMesh& mesh, const RepairOptions& options, RepairReport& report)
       mesh.nodes = kept;
       local.Reset();
       break;
+    }
+  }
+  // Last, once every corner is good, the folds inside elements: the nodes around them only, no
+  // element that meets the threshold pushed below it.
+  const NodeByNodeRepair::State corners = local.Current();
+  if (options.certifyInside && corners.inverted == 0 && corners.below == 0)
+  {
+    NodeByNodeRepair inside(mesh, options, adjacency, constraints, true);
+    const NodeByNodeRepair::State before = inside.Current();
+    if (before.inverted > 0)
+    {
+      const std::vector<Point3> kept = mesh.nodes;
+      inside.Run(global ? 0.95 : 0.9, 1);
+      if (!inside.Current().BetterThan(before))
+        mesh.nodes = kept;
     }
   }
   FollowEmbeddings(mesh, original);
@@ -140,7 +156,8 @@ RepairReport RepairMesh(FEMesh& mesh, const RepairOptions& options)
 
   quality::QualitySummary after = before;
   quality::CertificationSummary certifiedAfter = certifiedBefore;
-  if (before.belowThreshold > 0 || before.inverted > 0) // else untouched
+  const bool foldedBefore = options.certifyInside && certifiedBefore.NotValid() > 0;
+  if (before.belowThreshold > 0 || before.inverted > 0 || foldedBefore) // else untouched
   {
     // The lips move node by node here: close the mouth slit so that they stay together.
     const ClosedMouth closed = CloseMouth(mesh);
@@ -153,9 +170,10 @@ RepairReport RepairMesh(FEMesh& mesh, const RepairOptions& options)
   report.meanScaledJacobianAfter = after.mean;
   report.invertedAfter = after.inverted;
   report.belowThresholdAfter = after.belowThreshold;
-  report.success = after.belowThreshold == 0 && after.inverted == 0;
   report.notCertifiedAfter = certifiedAfter.NotValid();
   report.certifiedMinimumAfter = certifiedAfter.minimumLower;
+  report.success =
+    after.belowThreshold == 0 && after.inverted == 0 && (!options.certifyInside || report.notCertifiedAfter == 0);
 
   std::vector<std::pair<double, std::size_t>> failed;
   const std::vector<double> values = quality::ComputeQuality(mesh, quality::Measure::ScaledJacobian, sequential);
@@ -167,6 +185,16 @@ RepairReport RepairMesh(FEMesh& mesh, const RepairOptions& options)
   {
     report.failedElements.push_back(e);
     report.failedValues.push_back(value);
+  }
+  std::vector<std::pair<double, std::size_t>> folded;
+  for (const std::size_t e : certifiedAfter.notValid)
+    if (!(std::isnan(values[e]) || quality::IsVerdictFlag(values[e]) || values[e] < threshold))
+      folded.emplace_back(quality::CertifyElement(mesh, e).lower, e);
+  std::sort(folded.begin(), folded.end());
+  for (const auto& [value, e] : folded)
+  {
+    report.foldedInside.push_back(e);
+    report.foldedInsideValues.push_back(value);
   }
   if (options.progress)
     options.progress(1.0);

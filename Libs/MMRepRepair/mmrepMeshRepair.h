@@ -5,9 +5,11 @@
 // nodes around the inverted elements at once (foldover-free untangling) and then node by node,
 // then raise every element's scaled Jacobian to a threshold, moving the nodes of the worst elements
 // first and inner nodes before surface nodes; what stays below it is relaxed globally and repaired
-// node by node again. Surface nodes slide on their surface (projected back onto it), mid-sagittal
-// nodes stay on the symmetry plane and the nodes beside it on their side of it, so accuracy and
-// symmetry are kept. A mesh already valid above the threshold is returned unchanged, bit for bit.
+// node by node again; last, elements whose corners are good but that fold inside are opened (success
+// means valid inside every element, quality::CertifyMesh). Surface nodes slide on their surface
+// (projected back onto it), mid-sagittal nodes stay on the symmetry plane and the nodes beside it on
+// their side of it, so accuracy and symmetry are kept. A mesh already valid (at the threshold and
+// inside every element) is returned unchanged, bit for bit.
 #pragma once
 
 #include "mmrepFEMesh.h"
@@ -32,6 +34,10 @@ struct RepairOptions
   // pushed across (a tangle can leave every corner positive while the two halves overlap), they go
   // back first (mmrepRepairConstraints.h).
   bool keepPlaneSides = true;
+  // Success means valid inside every element, not only at the corners: an element whose corners are
+  // good but whose det J is not certified positive inside (quality::CertifiedQuality) counts as
+  // inverted, and the repair opens its fold.
+  bool certifyInside = true;
   // Surfaces the `skin` and `skull` node sets must stay on (nullptr: the mesh's own boundary).
   vtkPolyData* skinSurface = nullptr;
   vtkPolyData* skullSurface = nullptr;
@@ -45,14 +51,14 @@ struct RepairOptions
 
 struct RepairReport
 {
-  bool success = false;                                             // every element regular and >= threshold
+  // Every element regular and >= threshold at its corners, and (with certifyInside) valid inside.
+  bool success = false;
   double minScaledJacobianBefore = 0, minScaledJacobianAfter = 0;   // NaN when every element is degenerate
   double meanScaledJacobianBefore = 0, meanScaledJacobianAfter = 0; // (as quality::SummarizeScaledJacobian)
   std::size_t invertedBefore = 0, invertedAfter = 0;
   std::size_t belowThresholdBefore = 0, belowThresholdAfter = 0; // degenerate elements included
   // Validity inside the elements (quality::CertifyMesh), reported beside the corner measures: elements
   // not proved valid everywhere inside, and the smallest certified lower bound of det J / mean det J.
-  // The repair works on the corners and centres, so `success` does not include it yet.
   std::size_t notCertifiedBefore = 0, notCertifiedAfter = 0;
   double certifiedMinimumBefore = 0, certifiedMinimumAfter = 0;
   int untanglingSteps = 0; // minimisations of the global untangling (0: nothing inverted, or switched off)
@@ -64,6 +70,10 @@ struct RepairReport
   // Their scaled Jacobians, same order; a degenerate element (zero-length edge, Verdict's 1e30
   // flag) is reported as -infinity.
   std::vector<double> failedValues;
+  // Elements whose corners meet the threshold but that are not certified valid inside, worst first,
+  // with their certified lower bounds of det J / mean det J.
+  std::vector<std::size_t> foldedInside;
+  std::vector<double> foldedInsideValues;
   double seconds = 0;
 };
 

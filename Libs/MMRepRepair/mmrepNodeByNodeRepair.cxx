@@ -3,6 +3,7 @@
 // The node-by-node repair, see mmrepNodeByNodeRepair.h.
 #include "mmrepNodeByNodeRepair.h"
 
+#include "mmrepCertifiedJacobian.h"
 #include "mmrepIdealPositions.h"
 #include "mmrepMeshQuality.h"
 
@@ -27,8 +28,8 @@ bool IsSolid(ElementType t)
 } // namespace
 
 NodeByNodeRepair::NodeByNodeRepair(FEMesh& mesh, const RepairOptions& options, const NodeElements& adjacency,
-                                   const RepairConstraints& constraints)
-    : mesh_(mesh), options_(options), adjacency_(adjacency), constraints_(constraints)
+                                   const RepairConstraints& constraints, bool certifyInside)
+    : mesh_(mesh), options_(options), adjacency_(adjacency), constraints_(constraints), certifyInside_(certifyInside)
 {
   threshold_ = options.scaledJacobianThreshold;
   cap_ = std::min(1.0, threshold_ + kMargin);
@@ -127,7 +128,9 @@ NodeByNodeRepair::State NodeByNodeRepair::Current() const
 double NodeByNodeRepair::Quality(std::size_t e) const
 {
   const double v = quality::ElementQuality(mesh_, e, quality::Measure::ScaledJacobian);
-  return (std::isnan(v) || quality::IsVerdictFlag(v)) ? kDegenerate : v;
+  if (std::isnan(v) || quality::IsVerdictFlag(v))
+    return kDegenerate;
+  return v > 0 && certifyInside_ ? quality::CertifiedQuality(mesh_, e, v) : v;
 }
 
 NodeByNodeRepair::Progress NodeByNodeRepair::Measure(bool regularity) const

@@ -2,7 +2,8 @@
 // Copyright (c) 2026 MMRep developers (see LICENSE)
 // The node-by-node phase of the mesh repair (mmrepMeshRepair.h). Each element's quality is its
 // Verdict scaled Jacobian (as vtkMeshQuality computes it), a degenerate element (Verdict's 1e30 flag)
-// counting below any real value. Elements below the target are visited worst first; their nodes move
+// counting below any real value, optionally an element folded inside good corners its certified bound
+// (<= 0, quality::CertifiedQuality). Elements below the target are visited worst first; their nodes move
 // one at a time (worst corner first) by a derivative-free local search: geometric "ideal" positions,
 // a line search along the finite-difference gradient of the worst element around the node, compass
 // steps. A move is kept only when it raises the sorted (leximin) qualities of the elements around the
@@ -24,8 +25,9 @@ namespace mmrep
 class NodeByNodeRepair
 {
 public:
+  // `certifyInside`: an element folded inside good corners counts as inverted (its certified bound).
   NodeByNodeRepair(FEMesh& mesh, const RepairOptions& options, const NodeElements& adjacency,
-                   const RepairConstraints& constraints);
+                   const RepairConstraints& constraints, bool certifyInside = false);
 
   // Runs both phases on the mesh as it is now; options.progress goes from `from` to `to`.
   void Run(double from, double to);
@@ -63,6 +65,7 @@ private:
   const RepairOptions& options_;
   const NodeElements& adjacency_;
   const RepairConstraints& constraints_;
+  bool certifyInside_ = false;
   double threshold_ = 0.3, cap_ = 0.35;
   std::vector<double> quality_;
   bool ring_ = false;

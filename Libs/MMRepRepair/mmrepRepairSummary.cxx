@@ -100,11 +100,26 @@ std::string RepairReportJson(const RepairReport& report, const FEMesh& repaired,
                       {"degenerate", std::isinf(report.failedValues[k])}});
   }
   j["failedElements"] = failed;
+  json folded = json::array();
+  for (std::size_t k = 0; k < report.foldedInside.size(); ++k)
+    folded.push_back({{"element", report.foldedInside[k]},
+                      {"layer", TissueLayerName(repaired.elements[report.foldedInside[k]].layer)},
+                      {"certifiedMinimumJacobianRatio", Number(report.foldedInsideValues[k])}});
+  j["foldedInsideElements"] = folded;
   return j.dump(2);
 }
 
 std::string RepairFailureMessage(const RepairReport& report, double threshold)
 {
+  if (report.failedElements.empty() && !report.foldedInside.empty())
+  {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "%zu elements are folded inside although their corners are good (worst: element %zu, det J down "
+                  "to %.3g of its mean)",
+                  report.foldedInside.size(), report.foldedInside[0], report.foldedInsideValues[0]);
+    return text;
+  }
   char worst[64];
   const double w = report.failedValues.empty() ? std::numeric_limits<double>::quiet_NaN() : report.failedValues[0];
   if (std::isinf(w))

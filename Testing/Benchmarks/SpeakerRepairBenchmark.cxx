@@ -82,7 +82,8 @@ int main(int argc, char* argv[])
     repair.symmetryPlane = r.plane;
     for (const bool global : {false, true})
     {
-      repair.globalUntangling = repair.keepPlaneSides = global; // false: the repair before issue 28
+      // false: the repair before issue 28 (node by node, no plane sides, success at the corners only)
+      repair.globalUntangling = repair.keepPlaneSides = repair.certifyInside = global;
       PrintRepair(global ? "global + node by node" : "node by node", tangled, repair, r);
     }
   }
