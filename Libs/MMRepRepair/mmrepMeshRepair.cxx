@@ -23,6 +23,7 @@ namespace mmrep
 namespace
 {
 constexpr int kRelaxationRounds = 2; // global relaxations of the elements still below the threshold
+constexpr int kInsideRuns = 3;       // rounds at most of opening the folds inside elements
 
 // Untangles `seeds` globally; true when the mesh changed. Progress goes from `from` to `to`.
 bool UntangleGlobally(FEMesh& mesh, const RepairOptions& options, const NodeElements& adjacency,
@@ -60,6 +61,35 @@ void RestoreSides(FEMesh& mesh, const RepairConstraints& constraints)
   }
 }
 
+// Once every corner is good, the folds inside elements: node by node with the certified quality,
+// the nodes around them only, no element that meets the threshold pushed below it. Opening a fold can
+// leave that element just below the threshold at its corners: the corner phase lifts it, and the folds
+// are looked at again. Progress from `from` to 1.
+void OpenFoldsInside(FEMesh& mesh, const RepairOptions& options, const NodeElements& adjacency,
+                     const RepairConstraints& constraints, NodeByNodeRepair& corners, double from)
+{
+  for (int run = 0; run < kInsideRuns; ++run)
+  {
+    const double step = (1 - from) / kInsideRuns, start = from + step * run;
+    const NodeByNodeRepair::State cornerState = corners.Current();
+    if (cornerState.inverted > 0 || cornerState.below > 0)
+      return;
+    NodeByNodeRepair inside(mesh, options, adjacency, constraints, true);
+    const NodeByNodeRepair::State before = inside.Current();
+    if (before.inverted == 0)
+      return;
+    const std::vector<Point3> kept = mesh.nodes;
+    inside.Run(start, start + 0.5 * step);
+    if (!inside.Current().BetterThan(before))
+    {
+      mesh.nodes = kept;
+      return;
+    }
+    corners.Reset();
+    corners.Run(start + 0.5 * step, start + step);
+  }
+}
+
 // The repair's plan: the inverted elements untangled globally, then node by node; while elements
 // stay below the threshold, the region around them relaxed globally and repaired node by node
 // again, each round kept only when it leaves the mesh better.
@@ -93,21 +123,8 @@ void Repair(FEMesh& mesh, const RepairOptions& options, RepairReport& report)
       break;
     }
   }
-  // Last, once every corner is good, the folds inside elements: the nodes around them only, no
-  // element that meets the threshold pushed below it.
-  const NodeByNodeRepair::State corners = local.Current();
-  if (options.certifyInside && corners.inverted == 0 && corners.below == 0)
-  {
-    NodeByNodeRepair inside(mesh, options, adjacency, constraints, true);
-    const NodeByNodeRepair::State before = inside.Current();
-    if (before.inverted > 0)
-    {
-      const std::vector<Point3> kept = mesh.nodes;
-      inside.Run(global ? 0.95 : 0.9, 1);
-      if (!inside.Current().BetterThan(before))
-        mesh.nodes = kept;
-    }
-  }
+  if (options.certifyInside)
+    OpenFoldsInside(mesh, options, adjacency, constraints, local, global ? 0.95 : 0.9);
   FollowEmbeddings(mesh, original);
   for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
     if (mesh.nodes[i] != original[i])

@@ -152,7 +152,7 @@ TEST(RepairAtlas, ShippedAtlasIsSymmetricAndUnchangedByRepair)
 
 // A reduced AtlasRepairBenchmark: RandomTangle(2) (symmetric, noise 0.11 element sizes, ~480
 // inverted elements), a milder non-symmetric tangle with a fold and a warp, and RandomTangle(10)
-// (symmetric, noise 0.18, a warp, ~1700 inverted).
+// (symmetric, noise 0.18, a warp, ~1700 inverted), and a harder one at noise up to 0.3.
 TEST(RepairAtlas, TanglesRepairedAccuratelyAndSymmetrically)
 {
   const auto& c = mmrep::testing::ShippedAtlasTangleContext();
@@ -164,9 +164,11 @@ TEST(RepairAtlas, TanglesRepairedAccuratelyAndSymmetrically)
   mild.warp = 0.5;
   int acrossBefore = 0;
   // RandomTangle(10) pushes nodes next to the plane across it (node by node and the global stage
-  // alone left 12-14 elements below 0.3 there, overlapping their mirror images).
+  // alone left 12-14 elements below 0.3 there, overlapping their mirror images). RandomTangle(7, 0.3)
+  // (noise 0.19, 1 845 inverted): opening the last fold inside an element left it at 0.290 at its
+  // corners until the fold phase alternated with the corner phase.
   for (const mmrep::testing::TangleOptions& tangle :
-       {mmrep::testing::RandomTangle(2), mild, mmrep::testing::RandomTangle(10)})
+       {mmrep::testing::RandomTangle(2), mild, mmrep::testing::RandomTangle(10), mmrep::testing::RandomTangle(7, 0.3)})
   {
     SCOPED_TRACE("seed " + std::to_string(tangle.seed));
     FEMesh mesh = mmrep::testing::TangleMesh(c, tangle);
