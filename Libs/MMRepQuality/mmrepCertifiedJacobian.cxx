@@ -239,7 +239,10 @@ CertificationSummary CertifyMesh(const FEMesh& mesh, int maximumDepth)
     summary.invertedInside += r.validity == Validity::InvertedInside ? 1 : 0;
     summary.undecided += r.validity == Validity::Undecided ? 1 : 0;
     if (r.validity != Validity::Valid)
+    {
       summary.notValid.push_back(e);
+      summary.notValidLower.push_back(r.lower);
+    }
   }
   return summary;
 }

@@ -50,6 +50,7 @@ struct CertificationSummary
   std::size_t NotValid() const { return invertedCorner + invertedInside + undecided; }
   double minimumLower = 0;           // smallest relative lower bound over the solids
   std::vector<std::size_t> notValid; // the elements not certified valid, ascending
+  std::vector<double> notValidLower; // their relative lower bounds, same order
 };
 
 // Every element, in parallel (threads as mmrep::WorkerThreads); the result does not depend on the

@@ -204,9 +204,10 @@ RepairReport RepairMesh(FEMesh& mesh, const RepairOptions& options)
     report.failedValues.push_back(value);
   }
   std::vector<std::pair<double, std::size_t>> folded;
-  for (const std::size_t e : certifiedAfter.notValid)
-    if (!(std::isnan(values[e]) || quality::IsVerdictFlag(values[e]) || values[e] < threshold))
-      folded.emplace_back(quality::CertifyElement(mesh, e).lower, e);
+  for (std::size_t k = 0; k < certifiedAfter.notValid.size(); ++k)
+    if (const std::size_t e = certifiedAfter.notValid[k];
+        !(std::isnan(values[e]) || quality::IsVerdictFlag(values[e]) || values[e] < threshold))
+      folded.emplace_back(certifiedAfter.notValidLower[k], e);
   std::sort(folded.begin(), folded.end());
   for (const auto& [value, e] : folded)
   {

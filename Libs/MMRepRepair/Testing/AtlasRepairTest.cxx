@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <set>
 #include <vector>
 
 namespace
@@ -112,6 +113,13 @@ TEST(RepairAtlas, FoldInsideGoodCornersOpened)
   EXPECT_TRUE(untouched.success);
   EXPECT_EQ(untouched.movedNodes, 0u);
   EXPECT_EQ(untouched.notCertifiedAfter, 2u);
+  ASSERT_EQ(untouched.foldedInside.size(), 2u) << "the report names the folds";
+  EXPECT_EQ(std::set<std::size_t>(untouched.foldedInside.begin(), untouched.foldedInside.end()),
+            (std::set<std::size_t>{3350, 8858}));
+  for (std::size_t k = 0; k < 2; ++k)
+    EXPECT_NEAR(untouched.foldedInsideValues[k], quality::CertifyElement(input, untouched.foldedInside[k]).lower,
+                1e-12);
+  EXPECT_LT(untouched.foldedInsideValues[0], 0);
 
   options.certifyInside = true;
   FEMesh mesh = input;
